@@ -1,0 +1,90 @@
+// roughWallCore: framework-free physics of Derevich's rough-wall collision model.
+// Copyright (C) 2026 roughWallInteraction authors. SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Hard-sphere collision of a spinning sphere with a flat facet, as vectors
+// (model notes section 4; Derevich's (2.1)-(2.4) as corrected). Impulses are
+// per unit mass, so the particle mass never enters.
+//
+//   v_n = v.n < 0                   approach speed on the facet
+//   c   = v - r (w x n)             velocity of the contact point
+//   u_t = c - (c.n) n               slip velocity
+//   j_n = -(1 + e) v_n              normal impulse
+//   rolling/no-slip if |u_t| <= (7/2) mu0 (1 + e) |v_n|:  j_t = -(2/7) u_t
+//   sliding otherwise:              j_t = -muD j_n u_t/|u_t|
+//   v'' = v + j_n n + j_t,  w'' = w - (5/(2 r)) (n x j_t)
+//
+// "Rolling/no-slip" and "sliding" name the regimes; OpenFOAM's "stick" means
+// deposition and has nothing to do with them.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+
+namespace roughWall
+{
+
+using Vec3 = Eigen::Vector3d;
+
+//- Facet material: normal restitution and friction coefficients
+struct FacetMaterial
+{
+    double e = 1;     //!< normal restitution of a facet collision, [0, 1]
+    double mu0 = 0;   //!< static friction: the no-slip criterion
+    double muD = 0;   //!< dynamic (sliding) friction, <= mu0
+};
+
+enum class Regime { noSlip, sliding };
+
+//- Collide a sphere (velocity v, angular velocity w, radius r) with a facet
+//  of unit outward normal n; v.n < 0 is the caller's precondition. Without
+//  spin (withSpin = false) the sphere arrives without spin, w is neither read
+//  nor written, and no spin work is done.
+//  The sliding impulse is capped at the no-slip impulse so that the slip never
+//  reverses (only possible for muD > mu0, which the adapters reject): energy
+//  can then never grow, whatever the input.
+template<bool withSpin>
+Regime collideWithFacet
+(
+    Vec3& v,
+    Vec3& w,
+    const Vec3& n,
+    double radius,
+    const FacetMaterial& material
+)
+{
+    const double vn = v.dot(n);
+    const double jn = -(1 + material.e)*vn;
+
+    Vec3 contactVelocity = v;
+    if constexpr (withSpin)
+    {
+        contactVelocity -= radius*w.cross(n);
+    }
+    const Vec3 slip = contactVelocity - contactVelocity.dot(n)*n;
+    const double slipSpeed = slip.norm();
+
+    Vec3 jt;
+    Regime regime;
+    if (slipSpeed <= 3.5*material.mu0*jn)
+    {
+        jt = -(2.0/7.0)*slip;
+        regime = Regime::noSlip;
+    }
+    else
+    {
+        const double magnitude = std::min(material.muD*jn, (2.0/7.0)*slipSpeed);
+        jt = -(magnitude/slipSpeed)*slip;
+        regime = Regime::sliding;
+    }
+
+    v += jn*n + jt;
+    if constexpr (withSpin)
+    {
+        w -= (2.5/radius)*n.cross(jt);
+    }
+    return regime;
+}
+
+} // namespace roughWall
