@@ -1,0 +1,287 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | roughWallInteraction: rough-wall particle
+   \\    /   O peration     | collisions for OpenFOAM's Lagrangian clouds
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 The roughWallInteraction authors
+-------------------------------------------------------------------------------
+License
+    This file is part of roughWallInteraction.
+
+    roughWallInteraction is free software: you can redistribute it and/or
+    modify it under the terms of the GNU General Public License as published
+    by the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    roughWallInteraction is distributed in the hope that it will be useful,
+    but WITHOUT ANY WARRANTY; without even the implied warranty of
+    MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General
+    Public License for more details.
+
+    You should have received a copy of the GNU General Public License along
+    with roughWallInteraction.  If not, see <http://www.gnu.org/licenses/>.
+
+    SPDX-License-Identifier: GPL-3.0-or-later
+
+\*---------------------------------------------------------------------------*/
+
+#include "roughWallInput.H"
+#include "Switch.H"
+#include "OStringStream.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Format a bound: integers without a decimal point, "inf" for no bound
+Foam::string boundText(const Foam::scalar x)
+{
+    if (x >= Foam::GREAT)
+    {
+        return "inf";
+    }
+    Foam::OStringStream os;
+    os  << x;
+    return os.str();
+}
+
+//- The single number token of entry keyword, or a fatal error
+Foam::scalar numberToken
+(
+    const Foam::dictionary& dict,
+    const Foam::word& keyword,
+    const Foam::string& allowed,
+    const char* meaning
+)
+{
+    using namespace Foam;
+
+    const entry* eptr = dict.findEntry(keyword, keyType::LITERAL);
+
+    if (!eptr)
+    {
+        roughWallInput::fatalBadEntry
+        (
+            dict, keyword, allowed, meaning, "missing"
+        );
+    }
+
+    if (eptr->isDict())
+    {
+        roughWallInput::fatalBadEntry
+        (
+            dict, keyword, allowed, meaning, "a dictionary"
+        );
+    }
+
+    const ITstream& is = eptr->stream();
+
+    if (is.size() != 1 || !is[0].isNumber())
+    {
+        roughWallInput::fatalBadEntry
+        (
+            dict, keyword, allowed, meaning,
+            "'" + roughWallInput::entryText(dict, keyword) + "'"
+        );
+    }
+
+    return is[0].number();
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::string Foam::roughWallInput::range::allowed() const
+{
+    return "a number in [" + boundText(min) + ", " + boundText(max) + "]";
+}
+
+
+void Foam::roughWallInput::fatalBadEntry
+(
+    const dictionary& dict,
+    const word& keyword,
+    const string& allowed,
+    const char* meaning,
+    const string& found
+)
+{
+    FatalIOErrorInFunction(dict)
+        << "Bad entry for keyword '" << keyword.c_str() << "' in dictionary "
+        << dict.name().c_str() << nl
+        << "    found:   " << found.c_str() << nl
+        << "    allowed: " << allowed.c_str() << nl
+        << "    meaning: " << meaning << nl
+        << exit(FatalIOError);
+
+    // exit() does not return; keep [[noreturn]] honest for the compiler
+    std::abort();
+}
+
+
+Foam::string Foam::roughWallInput::entryText
+(
+    const dictionary& dict,
+    const word& keyword
+)
+{
+    const entry* eptr = dict.findEntry(keyword, keyType::LITERAL);
+
+    if (!eptr)
+    {
+        return string();
+    }
+
+    OStringStream os;
+    if (eptr->isDict())
+    {
+        os  << "{ ... }";
+    }
+    else
+    {
+        const ITstream& is = eptr->stream();
+        forAll(is, toki)
+        {
+            os  << (toki ? " " : "") << is[toki];
+        }
+    }
+    return os.str();
+}
+
+
+void Foam::roughWallInput::checkRange
+(
+    const dictionary& dict,
+    const word& keyword,
+    const range& r,
+    const scalar value
+)
+{
+    // Written so that NaN fails too
+    if (!(value >= r.min && value <= r.max))
+    {
+        fatalBadEntry
+        (
+            dict, keyword, r.allowed(), r.meaning,
+            "'" + entryText(dict, keyword) + "'"
+        );
+    }
+}
+
+
+Foam::scalar Foam::roughWallInput::readScalar
+(
+    const dictionary& dict,
+    const word& keyword,
+    const range& r
+)
+{
+    const scalar value = numberToken(dict, keyword, r.allowed(), r.meaning);
+    checkRange(dict, keyword, r, value);
+    return value;
+}
+
+
+Foam::scalar Foam::roughWallInput::readScalarOrDefault
+(
+    const dictionary& dict,
+    const word& keyword,
+    const range& r,
+    const scalar deflt
+)
+{
+    if (!dict.found(keyword, keyType::LITERAL))
+    {
+        return deflt;
+    }
+    return readScalar(dict, keyword, r);
+}
+
+
+Foam::label Foam::roughWallInput::readLabelOrDefault
+(
+    const dictionary& dict,
+    const word& keyword,
+    const range& r,
+    const label deflt
+)
+{
+    if (!dict.found(keyword, keyType::LITERAL))
+    {
+        return deflt;
+    }
+
+    const string allowed =
+        "an integer in [" + boundText(r.min) + ", " + boundText(r.max) + "]";
+
+    const entry& e = dict.lookupEntry(keyword, keyType::LITERAL);
+
+    if (e.isDict() || e.stream().size() != 1 || !e.stream()[0].isLabel())
+    {
+        fatalBadEntry
+        (
+            dict, keyword, allowed, r.meaning,
+            "'" + entryText(dict, keyword) + "'"
+        );
+    }
+    const ITstream& is = e.stream();
+
+    const label value = is[0].labelToken();
+    if (value < r.min || value > r.max)
+    {
+        fatalBadEntry
+        (
+            dict, keyword, allowed, r.meaning,
+            "'" + entryText(dict, keyword) + "'"
+        );
+    }
+    return value;
+}
+
+
+bool Foam::roughWallInput::readSwitchOrDefault
+(
+    const dictionary& dict,
+    const word& keyword,
+    const char* meaning,
+    const bool deflt
+)
+{
+    if (!dict.found(keyword, keyType::LITERAL))
+    {
+        return deflt;
+    }
+
+    const char* allowed = "true/false, on/off, yes/no";
+
+    const entry& e = dict.lookupEntry(keyword, keyType::LITERAL);
+
+    if (e.isDict() || e.stream().size() != 1 || !e.stream()[0].isWord())
+    {
+        fatalBadEntry
+        (
+            dict, keyword, allowed, meaning,
+            "'" + entryText(dict, keyword) + "'"
+        );
+    }
+    const ITstream& is = e.stream();
+
+    const Switch sw(is[0].wordToken(), true);
+    if (!sw.valid())
+    {
+        fatalBadEntry
+        (
+            dict, keyword, allowed, meaning,
+            "'" + entryText(dict, keyword) + "'"
+        );
+    }
+    return bool(sw);
+}
+
+
+// ************************************************************************* //

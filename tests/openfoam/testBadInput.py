@@ -1,0 +1,206 @@
+#!/usr/bin/env python3
+"""Bad input stops the run with a FatalIOError naming the dictionary, the
+keyword and the allowed range.
+
+Runs the solver on a small 2-D wall-impact case once per bad entry of
+roughWallInteractionCoeffs and checks that it fails (non-zero exit code, no
+crash) with "FOAM FATAL IO ERROR", the dictionary name
+(kinematicCloudProperties...roughWallInteractionCoeffs), the keyword and the
+allowed values in the log.  Controls: the unmodified settings run and
+write the statistics file, writeToFile false writes none; without
+the libs entry the run fails with OpenFOAM's "Unknown patchInteractionModel
+type roughWallInteraction" (the troubleshooting symptom of the docs).
+
+Usage: testBadInput.py --solver NAME [--work DIR]
+
+SPDX-License-Identifier: GPL-3.0-or-later
+"""
+
+import argparse
+import os
+import shutil
+
+import ofTestTools as t
+
+ROUGH = {
+    "type": "rough",
+    "e": "0.8",
+    "mu0": "0.4",
+    "muD": "0.4",
+    "roughnessAngle": "8",
+}
+
+
+def settings(rough=None, outlet="outlet { type escape; }", patches=True):
+    """roughWallSettings with the lowerWall/upperWall entry rough (None:
+    remove a keyword) and the outlet entry given."""
+    entries = dict(ROUGH)
+    entries.update(rough or {})
+    body = "\n".join("            %-15s %s;" % (k, v)
+                     for k, v in entries.items() if v is not None)
+    patch_list = """    patches
+    (
+        "(lowerWall|upperWall)"
+        {
+%s
+        }
+        %s
+    );
+""" % (body, outlet)
+    return """
+patchInteractionModel roughWallInteraction;
+
+roughWallInteractionCoeffs
+{
+%s}
+""" % (patch_list if patches else "")
+
+
+IN_PATCH = "roughWallInteractionCoeffs.patches.(lowerWall|upperWall)"
+
+#: name, settings, texts that the log must contain
+CASES = [
+    ("unknown type", settings({"type": "bouncy"}),
+     ["keyword 'type'", IN_PATCH, "rough rebound stick escape none",
+      "'bouncy'"]),
+    ("e negative", settings({"e": "-0.1"}),
+     ["keyword 'e'", IN_PATCH, "a number in [0, 1]", "'-0.1'"]),
+    ("e above 1", settings({"e": "1.3"}),
+     ["keyword 'e'", IN_PATCH, "a number in [0, 1]", "'1.3'"]),
+    ("e not a number", settings({"e": "abc"}),
+     ["keyword 'e'", IN_PATCH, "a number in [0, 1]", "'abc'"]),
+    ("e two numbers", settings({"e": "0.8 0.9"}),
+     ["keyword 'e'", IN_PATCH, "a number in [0, 1]", "'0.8 0.9'"]),
+    ("e missing", settings({"e": None}),
+     ["keyword 'e'", IN_PATCH, "a number in [0, 1]", "found:   missing"]),
+    ("mu0 negative", settings({"mu0": "-0.4"}),
+     ["keyword 'mu0'", IN_PATCH, "a number in [0, inf]"]),
+    ("mu0 missing", settings({"mu0": None}),
+     ["keyword 'mu0'", IN_PATCH, "a number in [0, inf]", "missing"]),
+    ("muD negative", settings({"muD": "-0.1"}),
+     ["keyword 'muD'", IN_PATCH, "a number in [0, 0.4]"]),
+    ("muD above mu0", settings({"muD": "0.5"}),
+     ["keyword 'muD'", IN_PATCH, "a number in [0, 0.4]",
+      "must not exceed mu0"]),
+    ("roughnessAngle above 45", settings({"roughnessAngle": "50"}),
+     ["keyword 'roughnessAngle'", IN_PATCH, "a number in [0, 45]"]),
+    ("roughnessAngle negative", settings({"roughnessAngle": "-1"}),
+     ["keyword 'roughnessAngle'", IN_PATCH, "a number in [0, 45]"]),
+    ("roughnessAngle not a number", settings({"roughnessAngle": "eight"}),
+     ["keyword 'roughnessAngle'", IN_PATCH, "a number in [0, 45]",
+      "'eight'"]),
+    ("roughnessAngle missing", settings({"roughnessAngle": None}),
+     ["keyword 'roughnessAngle'", IN_PATCH, "missing"]),
+    ("roughnessAngle table not increasing",
+     settings({"roughnessAngle": "((2e-4 8) (1e-4 5))"}),
+     ["keyword 'roughnessAngle'", IN_PATCH, "strictly increasing",
+      "(row 2)"]),
+    ("roughnessAngle table angle out of range",
+     settings({"roughnessAngle": "((1e-4 8) (2e-4 60))"}),
+     ["keyword 'roughnessAngle'", IN_PATCH, "Delta in [0, 45]", "(row 2)"]),
+    ("roughnessAngle table negative diameter",
+     settings({"roughnessAngle": "((-1e-4 8) (2e-4 6))"}),
+     ["keyword 'roughnessAngle'", IN_PATCH, "d >= 0", "(row 1)"]),
+    ("roughnessAngle table malformed",
+     settings({"roughnessAngle": "((1e-4 8) (2e-4))"}),
+     ["keyword 'roughnessAngle'", IN_PATCH, "((d1 Delta1) (d2 Delta2) ...)"]),
+    ("maxFacetCollisions zero", settings({"maxFacetCollisions": "0"}),
+     ["keyword 'maxFacetCollisions'", IN_PATCH, "an integer in [1, 1000]"]),
+    ("maxFacetCollisions not an integer",
+     settings({"maxFacetCollisions": "2.5"}),
+     ["keyword 'maxFacetCollisions'", IN_PATCH, "an integer in [1, 1000]"]),
+    ("lateralTilt not a switch", settings({"lateralTilt": "maybe"}),
+     ["keyword 'lateralTilt'", IN_PATCH, "true/false, on/off, yes/no"]),
+    ("rebound e above 1",
+     settings(outlet="outlet { type rebound; e 2; }"),
+     ["keyword 'e'", "roughWallInteractionCoeffs.patches.outlet",
+      "a number in [0, 1]", "'2'"]),
+    ("rebound mu negative",
+     settings(outlet="outlet { type rebound; mu -1; }"),
+     ["keyword 'mu'", "roughWallInteractionCoeffs.patches.outlet",
+      "a number in [0, 1]"]),
+    ("none on a wall", settings({"type": "none", "e": None, "mu0": None,
+                                 "muD": None, "roughnessAngle": None}),
+     ["keyword 'patches'", "roughWallInteractionCoeffs",
+      "type none for wall patch lowerWall", "none only on other patches"]),
+    ("patch not covered", settings(outlet=""),
+     ["keyword 'patches'", "roughWallInteractionCoeffs",
+      "no entry for patch(es) outlet", "not coupled, empty or wedge"]),
+    ("patches missing", settings(patches=False),
+     ["keyword 'patches'", "roughWallInteractionCoeffs", "missing"]),
+    ("patches entry without dictionary",
+     settings(outlet="outlet escape;"),
+     ["keyword 'patches'", "roughWallInteractionCoeffs",
+      "expected '{' after outlet"]),
+]
+
+#: Signs of a crash instead of a clean fatal error (a stack trace)
+CRASH_SIGNS = ["sigSegv", "sigFpe", "Segmentation fault", "core dumped",
+               "printStack"]
+
+
+def parse_args():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("--solver", required=True)
+    p.add_argument("--work", default=".")
+    return p.parse_args()
+
+
+def read(path):
+    with open(path) as f:
+        return f.read()
+
+
+def test():
+    args = parse_args()
+    case = os.path.abspath(os.path.join(args.work, "case"))
+    t.make_case(case, two_d=True, parcels=10)
+    t.set_control(case, endTime="0.001")
+    t.run(case, ["blockMesh"], "log.blockMesh")
+
+    # Control: the unmodified settings run
+    t.write_settings(case, settings())
+    rc = t.run(case, [args.solver], "log.good", check_rc=False)
+    t.check(rc == 0, "control: the valid settings run (rc %d)" % rc)
+
+    # Control: writeToFile false writes no statistics file
+    stats_dir = os.path.join(case, "postProcessing")
+    t.check(os.path.isdir(stats_dir), "control: statistics file written")
+    shutil.rmtree(stats_dir)
+    t.write_settings(case, settings().replace(
+        "roughWallInteractionCoeffs\n{\n",
+        "roughWallInteractionCoeffs\n{\n    writeToFile false;\n"))
+    rc = t.run(case, [args.solver], "log.noFile", check_rc=False)
+    t.check(rc == 0 and not os.path.exists(stats_dir),
+            "control: writeToFile false runs and writes no statistics file")
+
+    for i, (name, text, expected) in enumerate(CASES):
+        t.write_settings(case, text)
+        log = "log.bad%02d" % i
+        rc = t.run(case, [args.solver], log, check_rc=False)
+        out = read(os.path.join(case, log))
+        missing = [e for e in ["FOAM FATAL IO ERROR",
+                               "kinematicCloudProperties"] + expected
+                   if e not in out]
+        crashed = [s for s in CRASH_SIGNS if s in out]
+        t.check(rc != 0 and not missing and not crashed,
+                "%s: rc %d, %s%s" % (
+                    name, rc,
+                    "missing text %s" % missing if missing else
+                    "error names %s" % ", ".join(expected),
+                    ", CRASH %s" % crashed if crashed else ""))
+
+    # Control: without libs the model is unknown (troubleshooting symptom)
+    t.make_case(case, two_d=True, parcels=10, with_libs=False)
+    t.set_control(case, endTime="0.001")
+    t.run(case, ["blockMesh"], "log.blockMesh")
+    rc = t.run(case, [args.solver], "log.noLibs", check_rc=False)
+    out = read(os.path.join(case, "log.noLibs"))
+    t.check(rc != 0 and "Unknown patchInteractionModel type roughWallInteraction"
+            in out,
+            "without libs: 'Unknown patchInteractionModel type "
+            "roughWallInteraction' (rc %d)" % rc)
+
+
+if __name__ == "__main__":
+    t.main(test)

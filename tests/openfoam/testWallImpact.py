@@ -1,0 +1,178 @@
+#!/usr/bin/env python3
+"""Rebound statistics of parcels fired at a flat rough wall.
+
+Fires N parcels per incidence angle (10, 30, 60 deg, 1 m/s, no forces) at
+lowerWall (e 0.8, mu0 = muD = 0.4, lateral tilt off) and reads their
+velocities at the end time, when each has hit the wall exactly once.
+Checks:
+  - no parcel is lost, every parcel leaves the wall (v_y > 0);
+  - mean and sd of k_n = -v''_y/v'_y and k_t = v''_x/v'_x (relative to the
+    wall) per angle agree with the core's Monte Carlo reference
+    (roughWallReference, 1e6 samples, its own random stream) within 4
+    combined standard errors;
+  - the statistics file (reduced over processors in parallel) counts every
+    hit and its mean k_n, k_t and energy loss equal those computed from the
+    parcels (to 1e-8 relative, 1e-6 for the energy: the file has 12 digits);
+  - spin: written for the colliding cloud, absent for the kinematic cloud.
+
+With --wallVelocity u the wall moves at (u, 0, 0): the incidence angles
+relative to the wall change (u = -0.5: 6.7, 20.1 and 40.9 deg) and k_n, k_t,
+the energy loss and the reference are all taken relative to the wall.
+
+Usage: testWallImpact.py --solver NAME --spin 0|1 --reference BIN
+           [--roughness "8" | --roughness "((100e-6 8) (120e-6 4))"]
+           [--parcels N] [--np N] [--dpm] [--wallVelocity u] [--work DIR]
+--dpm sets the case up for DPMFoam and MPPICFoam (air at rest, no forces on
+the parcels).  With --np N the case is split into N slabs along x; for
+N = 2 at x = 0, through the injection region (x in [-0.04, 0]) and the
+10 deg impact zone, so parcels cross the processor boundary and hit the wall
+on both processors.  N = 3 gives the middle processor two processor patches
+and the others one: the statistics must not depend on that.
+
+SPDX-License-Identifier: GPL-3.0-or-later
+"""
+
+import argparse
+import math
+import os
+
+import numpy as np
+
+import ofTestTools as t
+
+END_TIME = "0.05"
+
+
+def parse_args():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("--solver", required=True)
+    p.add_argument("--spin", type=int, required=True)
+    p.add_argument("--reference", required=True)
+    p.add_argument("--roughness", default="8")
+    p.add_argument("--parcels", type=int, default=10000)
+    p.add_argument("--np", type=int, default=1)
+    p.add_argument("--wallVelocity", type=float, default=0.0,
+                   help="lowerWall moves at (wallVelocity 0 0)")
+    p.add_argument("--dpm", action="store_true",
+                   help="DPMFoam/MPPICFoam set-up (carrier phase air)")
+    p.add_argument("--work", default=".")
+    return p.parse_args()
+
+
+def roughness_at(text, d):
+    """Delta [deg] of the roughnessAngle entry for diameter d."""
+    numbers = [float(x) for x in text.replace("(", " ").replace(")", " ").split()]
+    if len(numbers) == 1:
+        return numbers[0]
+    table = np.array(numbers).reshape(-1, 2)
+    return float(np.interp(d, table[:, 0], table[:, 1]))
+
+
+def settings(roughness):
+    return t.DEFAULT_SETTINGS.replace("roughnessAngle  8;",
+                                      "roughnessAngle  %s;" % roughness)
+
+
+def test():
+    args = parse_args()
+    case = os.path.abspath(os.path.join(args.work, "case"))
+    t.make_case(case, parcels=args.parcels, settings=settings(args.roughness),
+                dpm=args.dpm)
+    if args.wallVelocity:
+        t.set_wall_velocity(case, args.wallVelocity)
+    t.run(case, ["blockMesh"], "log.blockMesh")
+    if args.np > 1:
+        t.set_subdomains(case, args.np)
+        t.run(case, ["decomposePar"], "log.decomposePar")
+        t.run(case, t.mpirun(args.np, [args.solver, "-parallel"]),
+              "log." + args.solver)
+    else:
+        t.run(case, [args.solver], "log." + args.solver)
+
+    if args.np > 1:
+        with open(os.path.join(case, "log." + args.solver)) as f:
+            t.check("nProcs : %d" % args.np in f.read(),
+                    "the run was parallel on %d processors" % args.np)
+        counts = [len(t.read_field(os.path.join(dd, "d")))
+                  for dd in t.cloud_dirs(case, END_TIME)]
+        t.check(len(counts) == args.np and min(counts) > 0,
+                "every processor holds parcels at the end (%s)" % counts)
+
+    fields = ["U", "d", "rho", "nParticle"]
+    if args.spin:
+        fields.append("angularMomentum")
+    parcels = t.read_cloud(case, END_TIME, fields)
+    U = parcels["U"]
+    d = parcels["d"]
+    n_total = len(t.ANGLES) * args.parcels
+
+    t.check(len(U) == n_total,
+            "all %d parcels are still in the domain (found %d)"
+            % (n_total, len(U)))
+    t.check(bool(np.all(U[:, 1] > 0)),
+            "every parcel leaves the wall (min v_y = %.3g)" % U[:, 1].min())
+    t.check(bool(np.all(U[:, 2] == 0)),
+            "no out-of-plane velocity without lateral tilt (max |v_z| = %.3g)"
+            % np.abs(U[:, 2]).max())
+
+    spin_files = [os.path.join(dd, "angularMomentum")
+                  for dd in t.cloud_dirs(case, END_TIME)]
+    if args.spin:
+        L = parcels["angularMomentum"]
+        t.check(np.count_nonzero(L[:, 2]) > 0.9 * n_total,
+                "spin is written (non-zero for %d of %d parcels)"
+                % (np.count_nonzero(L[:, 2]), n_total))
+    else:
+        t.check(not any(os.path.exists(f) for f in spin_files),
+                "a kinematic cloud stores no spin")
+
+    # Rebound statistics per angle against the core's reference
+    def reference_of_angle(angle, d_angle):
+        delta = roughness_at(args.roughness, d_angle)
+        return t.reference(args.reference, args.spin, delta, [angle])[angle], delta
+
+    kn_all, kt_all = t.check_rebound_statistics(
+        U, d, args.parcels, reference_of_angle,
+        wall_velocity=args.wallVelocity)
+
+    # The statistics file against the parcels
+    mass = parcels["rho"] * math.pi / 6 * d**3 * parcels["nParticle"]
+    # Relative to the wall
+    U_rel = U - np.array([args.wallVelocity, 0, 0])
+    incident = np.empty_like(U)
+    for angle, d_angle in t.ANGLES.items():
+        incident[np.abs(d - d_angle) < 1e-9] = \
+            t.incident_velocity(angle, args.wallVelocity)
+    energy_loss = 0.5 * mass * (np.sum(incident**2, axis=1)
+                                - np.sum(U_rel**2, axis=1))
+    if args.spin:
+        inertia = 0.1 * mass * d**2
+        energy_loss -= 0.5 * np.sum(L**2, axis=1) / inertia
+    _, rows = t.read_statistics(case)
+    last = rows[-1]
+
+    def close(a, b, rel=1e-8):
+        return abs(a - b) <= rel * max(abs(a), abs(b), 1e-300)
+
+    t.check(last["lowerWall_hits"] == n_total,
+            "statistics file: lowerWall_hits = %d" % last["lowerWall_hits"])
+    t.check(last["upperWall_hits"] == 0 and last["escapedParcels"] == 0,
+            "statistics file: no hits on upperWall, no escapes")
+    t.check(close(last["lowerWall_meanKn"], kn_all.mean()),
+            "statistics file: meanKn %.10g = parcels' %.10g"
+            % (last["lowerWall_meanKn"], kn_all.mean()))
+    t.check(close(last["lowerWall_meanKt"], kt_all.mean()),
+            "statistics file: meanKt %.10g = parcels' %.10g"
+            % (last["lowerWall_meanKt"], kt_all.mean()))
+    t.check(close(last["lowerWall_energyLoss"], energy_loss.sum(), 1e-6),
+            "statistics file: energyLoss %.10g = parcels' %.10g"
+            % (last["lowerWall_energyLoss"], energy_loss.sum()))
+    per_hit = (last["lowerWall_noSlip"] + last["lowerWall_sliding"]) / n_total
+    t.check(close(last["lowerWall_facetPerHit"], per_hit, 1e-10)
+            and 1 <= per_hit < 1.5,
+            "statistics file: facetPerHit %.6f = (noSlip + sliding)/hits"
+            % per_hit)
+
+
+if __name__ == "__main__":
+    t.main(test)
