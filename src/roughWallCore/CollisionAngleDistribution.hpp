@@ -36,8 +36,14 @@ class CollisionAngleDistribution
 
     double h(double alpha) const { return alpha/Delta_; }
 
-    //- Normalisation erf(h/sqrt2), exact to round-off for every h
-    static double mass(double h) { return gaussianMassFrom(-h, 2*h); }
+    //- Normalisation erf(h/sqrt2), exact to round-off for every h (1 to
+    //  double precision beyond h = 40, where h may also be inf: Delta
+    //  subnormal, and -h + 2h would be NaN)
+    static double mass(double h) { return h > 40 ? 1.0 : gaussianMassFrom(-h, 2*h); }
+
+    //- A ratio of two masses computed differently, kept a probability
+    //  (NaN stays NaN)
+    static double probability(double p) { return p > 1 ? 1.0 : p; }
 
 public:
 
@@ -63,8 +69,9 @@ public:
         const double g = gamma/Delta_;
         if (hh < hRayleigh_)
         {
-            // Rayleigh: b exp(-b^2/2) in b
-            return b*std::exp(-0.5*g*g)/Delta_;
+            // Rayleigh: b exp(-b^2/2) in b; 0 where exp underflows (b may
+            // overflow to inf for gamma/Delta > 1e308: no inf*0)
+            return g < 40 ? b*std::exp(-0.5*g*g)/Delta_ : 0;
         }
         return standardNormalPdf(g)*(-std::expm1(-2*hh*b))/(mass(hh)*Delta_);
     }
@@ -87,7 +94,7 @@ public:
             return std::exp(-0.5*b*b);
         }
         // mass of phi over [g, g + 2h] over mass over [-h, h]
-        return gaussianMassFrom(gamma/Delta_, 2*hh)/mass(hh);
+        return probability(gaussianMassFrom(gamma/Delta_, 2*hh)/mass(hh));
     }
 
     //- Probability that the tilt is at most gamma
@@ -112,7 +119,7 @@ public:
         {
             return 1 - survival;
         }
-        return lowerMass(b, gamma/Delta_, hh)/mass(hh);
+        return probability(lowerMass(b, gamma/Delta_, hh)/mass(hh));
     }
 
     //- Mean tilt <gamma>, eq. (1.4): alpha erfc(A)/erf(A), A = alpha/(sqrt2 Delta)
@@ -142,6 +149,12 @@ public:
         if (A < hRayleigh_)
         {
             return 2*Delta_*Delta_;
+        }
+        if (A > 10)
+        {
+            // The correction is below 1e-42: none in double precision (and
+            // A*A*erfc(A) would be inf*0 = NaN for alpha/Delta > 1e154)
+            return Delta_*Delta_;
         }
         const double correction =
             (2/std::sqrt(pi)*A*std::exp(-A*A) - 4*A*A*std::erfc(A))/std::erf(A);

@@ -18,6 +18,7 @@
 
 #include "CollisionAngleDistribution.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -120,7 +121,9 @@ double sampleFacetAngle(double alpha, double Delta, Uniform01& uniform01)
         return 0;
     }
     const double s = truncatedStandardNormal(alpha/Delta, uniform01);
-    const double R = std::sqrt(s*s + detail::twoExponential(uniform01));
+    // R >= s; the max keeps it so where s*s underflows (alpha < 1e-154 Delta)
+    // and the exponential is 0: else gamma = -2 Delta s could pass -alpha
+    const double R = std::max(s, std::sqrt(s*s + detail::twoExponential(uniform01)));
     return Delta*(R - 2*s);
 }
 
@@ -158,7 +161,8 @@ double sampleFacetAngleByInversion
     {
         lo = -40;
     }
-    while (residual(hi) < 0)
+    // (bounded: hi reaches the largest double in 1024 doublings)
+    for (int i = 0; i < 1100 && residual(hi) < 0; ++i)
     {
         lo = hi;
         hi *= 2;

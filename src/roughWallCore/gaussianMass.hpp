@@ -97,7 +97,8 @@ inline double gaussianMassOn(double a, double c, double width)
 
 inline double gaussianMassFrom(double a, double width)
 {
-    return detail::gaussianMassOn(a, a + width, width);
+    // an infinite width reaches +inf even from a = -inf (-inf + inf is NaN)
+    return detail::gaussianMassOn(a, std::isinf(width) ? width : a + width, width);
 }
 
 //- Mass of the standard normal distribution on [a, c] (0 if c <= a)

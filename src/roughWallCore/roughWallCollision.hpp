@@ -30,7 +30,9 @@
 #include "facetAngleSampler.hpp"
 #include "facetCollision.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace roughWall
 {
@@ -107,7 +109,18 @@ Vec3 incidenceTangent
     const double length = tangential.norm();
     if (length > 0)
     {
-        return tangential/length;
+        // The tangential part is orthogonal to N only to the round-off of
+        // the velocity; near normal incidence that round-off is all there
+        // is, and a tangent not orthogonal to N makes the facet normal
+        // non-unit (energy not conserved). Orthogonalise the unit vector
+        // again; if little is left, the incidence is normal to round-off.
+        Vec3 t = tangential/length;
+        t -= t.dot(wallNormal)*wallNormal;
+        const double tLength = t.norm();
+        if (tLength > 0.5)
+        {
+            return t/tLength;
+        }
     }
     if (twoD)
     {
@@ -149,19 +162,31 @@ RoughWallReport collideWithRoughWall
         if (draw >= p.maxFacetCollisions)
         {
             collideWithFacet<withSpin>(velocity, spin, wallNormal, radius, p.material);
-            // v.N = -e v.N >= 0 up to round-off; for e = 0 remove that too
-            const double normalSpeed = velocity.dot(wallNormal);
-            if (normalSpeed < 0)
+            // v.N = -e v.N >= 0 up to round-off. Where the round-off wins
+            // (e = 0, or grazing incidence on a wall not aligned with the
+            // axes: v.N is then below the rounding error of the tangential
+            // components) project the normal part out, and if rounding
+            // leaves v.N < 0 again, lift it by a few ulps of |v| (a relative
+            // energy change of order 1e-28): the particle must not stay in
+            // the wall.
+            const double margin = std::max
+            (
+                16*std::numeric_limits<double>::epsilon()
+               *velocity.lpNorm<Eigen::Infinity>(),    // no underflow of |v|^2
+                16*std::numeric_limits<double>::denorm_min()
+            );
+            for (int i = 0; i < 4 && velocity.dot(wallNormal) < 0; ++i)
             {
-                velocity -= normalSpeed*wallNormal;
+                velocity -= (velocity.dot(wallNormal) - i*margin)*wallNormal;
             }
             report.fallback = true;
             break;
         }
 
-        // Plane of incidence, from the direction of v (scaled: no underflow)
-        const double speed = velocity.norm();
-        const Vec3 direction = velocity/speed;
+        // Plane of incidence, from the direction of v, scaled by its largest
+        // component first: |v|^2 underflows for |v| < 1e-154 (a NaN
+        // direction made the lateral tilt return NaN velocities)
+        const Vec3 direction = (velocity/velocity.cwiseAbs().maxCoeff()).normalized();
         const double normalPart = direction.dot(wallNormal);
         Vec3 tangential = direction - normalPart*wallNormal;
         if (twoD)

@@ -1,0 +1,108 @@
+# roughWallInteraction benchmarks: shared helpers of the benchmark scripts.
+# Copyright (C) 2026 roughWallInteraction authors. SPDX-License-Identifier: GPL-3.0-or-later
+"""Paths, machine description, running Google Benchmark binaries."""
+import datetime
+import json
+import os
+import platform
+import re
+import subprocess
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+RESULTS = os.path.join(ROOT, "benchmarks", "results")
+FIGURES = os.path.join(ROOT, "docs", "figures")
+
+
+def ensure_dirs():
+    os.makedirs(RESULTS, exist_ok=True)
+    os.makedirs(FIGURES, exist_ok=True)
+
+
+def _run(cmd):
+    try:
+        return subprocess.run(cmd, capture_output=True, text=True,
+                              check=True).stdout
+    except (OSError, subprocess.CalledProcessError):
+        return ""
+
+
+def machine():
+    """What the numbers were measured on (lscpu, nproc, load, compiler)."""
+    info = {}
+    lscpu = _run(["lscpu"])
+    for key in ("Model name", "CPU(s)", "Thread(s) per core",
+                "Hypervisor vendor", "L2 cache", "L3 cache"):
+        m = re.search(r"^%s:\s*(.+)$" % re.escape(key), lscpu, re.M)
+        if m:
+            info[key] = m.group(1).strip()
+    mhz = re.search(r"^cpu MHz\s*:\s*(.+)$",
+                    open("/proc/cpuinfo").read(), re.M)
+    if mhz:
+        info["cpu MHz"] = mhz.group(1).strip()
+    info["nproc"] = _run(["nproc"]).strip()
+    info["load average (1, 5, 15 min)"] = " ".join(
+        open("/proc/loadavg").read().split()[:3])
+    info["kernel"] = platform.release()
+    info["compiler"] = _run(["c++", "--version"]).splitlines()[0] \
+        if _run(["c++", "--version"]) else "?"
+    info["git commit"] = _run(["git", "-C", ROOT, "rev-parse", "--short",
+                               "HEAD"]).strip()
+    dirty = _run(["git", "-C", ROOT, "status", "--porcelain",
+                  "src/roughWallCore"])
+    if dirty.strip():
+        info["git commit"] += " (src/roughWallCore modified)"
+    info["date"] = datetime.datetime.now().isoformat(timespec="seconds")
+    return info
+
+
+def machine_markdown(info):
+    return "\n".join("| %s | %s |" % (k, v) for k, v in info.items())
+
+
+def write_machine(name):
+    """Record the machine next to a result file; returns the dict."""
+    info = machine()
+    with open(os.path.join(RESULTS, name + ".machine.json"), "w") as f:
+        json.dump(info, f, indent=1)
+    return info
+
+
+def run_google_benchmark(binary, regex, min_time, repetitions, json_out):
+    """Run a Google Benchmark binary; returns {name: median run} (times in
+    ns) and writes the raw JSON to json_out."""
+    cmd = [binary, "--benchmark_filter=" + regex,
+           "--benchmark_min_time=%g" % min_time,
+           "--benchmark_repetitions=%d" % repetitions,
+           "--benchmark_report_aggregates_only=true",
+           "--benchmark_format=json", "--benchmark_out_format=json",
+           "--benchmark_out=" + json_out]
+    print("+ " + " ".join(cmd), flush=True)
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+    with open(json_out) as f:
+        data = json.load(f)
+    scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}
+    runs = {}
+    for b in data["benchmarks"]:
+        if b.get("run_type") == "aggregate" and \
+                b.get("aggregate_name") not in ("median", "stddev"):
+            continue
+        name = b.get("run_name", b["name"])
+        kind = b.get("aggregate_name", "median")
+        entry = runs.setdefault(name, {})
+        factor = scale[b["time_unit"]]
+        entry[kind] = dict(b)
+        entry[kind]["real_ns"] = b["real_time"]*factor
+        entry[kind]["cpu_ns"] = b["cpu_time"]*factor
+    return {name: dict(v["median"], stddev_ns=v.get("stddev", {}).get(
+        "cpu_ns", float("nan"))) for name, v in runs.items()}
+
+
+def parse_name(name):
+    """'hit/model:rough/spin:1/alpha:5' -> {'kind': 'hit', 'model': ...}"""
+    parts = name.split("/")
+    fields = {"kind": parts[0]}
+    for p in parts[1:]:
+        if ":" in p:
+            k, v = p.split(":", 1)
+            fields[k] = v
+    return fields

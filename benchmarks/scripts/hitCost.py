@@ -1,0 +1,314 @@
+#!/usr/bin/python3
+# roughWallInteraction benchmarks: cost of one wall hit in the core.
+# Copyright (C) 2026 roughWallInteraction authors. SPDX-License-Identifier: GPL-3.0-or-later
+"""Per-hit cost of collideWithRoughWall against a smooth-wall rebound.
+
+Runs benchRoughWallCore (Google Benchmark; the median CPU time of the
+repetitions), writes benchmarks/results/hit-cost.{json,csv,md} and
+docs/figures/bench-hit-cost.png. With --instructions it also counts the
+instructions per hit under callgrind (hitLoop at two hit counts; needs
+valgrind) into benchmarks/results/hit-instructions.{csv,md}.
+"""
+import argparse
+import csv
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import benchCommon as bc  # noqa: E402
+
+TARGET_NS = 60
+TARGET_RATIO = 10
+CONFIGS = [  # (label, spin, lateral, dim)
+    ("3-D, spin", "1", "0", "3"),
+    ("3-D, spin, lateral tilt", "1", "1", "3"),
+    ("3-D, no spin", "0", "0", "3"),
+    ("2-D, no spin", "0", "0", "2"),
+]
+ALPHAS = ["mix", "1", "5", "15", "45", "85"]
+DELTAS = ["0", "2", "8", "20", "45"]
+
+
+def alpha_label(a):
+    return "U(0, 90)" if a == "mix" else a
+
+
+def measure(args):
+    runs = bc.run_google_benchmark(
+        args.bench, "^(hit|uniform01)/", args.min_time, args.repetitions,
+        os.path.join(bc.RESULTS, "hit-cost.json"))
+    rows = []
+    for name, r in runs.items():
+        f = bc.parse_name(name)
+        rows.append(dict(
+            name=name, kind=f["kind"], model=f.get("model", ""),
+            spin=f.get("spin", ""), lateral=f.get("lateral", ""),
+            dim=f.get("dim", ""), alpha=f.get("alpha", ""),
+            Delta=f.get("Delta", ""), rng=f.get("rng", ""),
+            ns_per_hit="%.4g" % r["cpu_ns"],
+            stddev_ns="%.2g" % r["stddev_ns"],
+            facetCollisions="%.5g" % r.get("facetCollisions", float("nan")),
+            fallbacks="%.3g" % r.get("fallbacks", float("nan"))))
+    with open(os.path.join(bc.RESULTS, "hit-cost.csv"), "w",
+              newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    return rows
+
+
+def load():
+    with open(os.path.join(bc.RESULTS, "hit-cost.csv")) as f:
+        return list(csv.DictReader(f))
+
+
+def index(rows):
+    table = {}
+    for r in rows:
+        table[r["name"]] = r
+    return table
+
+
+def ns(table, name):
+    r = table.get(name)
+    return float(r["ns_per_hit"]) if r else float("nan")
+
+
+def rough_name(spin, lateral, dim, alpha, Delta, rng="foam", model="rough"):
+    return ("hit/model:%s/spin:%s/lateral:%s/dim:%s/alpha:%s/Delta:%s/"
+            "rng:%s" % (model, spin, lateral, dim, alpha, Delta, rng))
+
+
+def smooth_name(spin, dim, alpha):
+    return "hit/model:smooth/spin:%s/dim:%s/alpha:%s/rng:none" % (
+        spin, dim, alpha)
+
+
+def markdown(rows, machine):
+    t = index(rows)
+    out = []
+    out.append("Median CPU time per hit [ns] (Google Benchmark); smooth = "
+               "`collideWithFacet` with the mean-wall normal and the same "
+               "friction law; ratio = rough/smooth; facet collisions per hit "
+               "in brackets.\n")
+    out.append("Incidence alpha ~ U(0, 90 deg), glass on steel (e = 0.8, "
+               "mu0 = muD = 0.4), OpenFOAM's Rand48 random source:\n")
+    out.append("| configuration | smooth | " + " | ".join(
+        "Delta = %s deg" % d for d in DELTAS) + " |")
+    out.append("|---|---|" + "---|"*len(DELTAS))
+    for label, spin, lateral, dim in CONFIGS:
+        smooth = ns(t, smooth_name(spin, dim, "mix"))
+        cells = []
+        for d in DELTAS:
+            r = t.get(rough_name(spin, lateral, dim, "mix", d))
+            if not r:
+                cells.append("-")
+                continue
+            v = float(r["ns_per_hit"])
+            cells.append("%.0f (x%.1f) [%.3f]" % (
+                v, v/smooth, float(r["facetCollisions"])))
+        out.append("| %s | %.1f | %s |" % (label, smooth, " | ".join(cells)))
+    std = ns(t, "hit/model:standard/alpha:mix")
+    u_foam = ns(t, "uniform01/rng:foam")
+    u_mt = ns(t, "uniform01/rng:mt19937")
+    out.append("\nOpenFOAM's StandardWallInteraction rebound arithmetic: "
+               "%.1f ns per hit. One uniform draw: %.1f ns (Rand48, as in "
+               "OpenFOAM), %.1f ns (mt19937_64)." % (std, u_foam, u_mt))
+    mt = ns(t, rough_name("1", "0", "3", "mix", "8", "mt19937"))
+    out.append("3-D with spin at Delta = 8 deg with mt19937_64 instead of "
+               "Rand48: %.0f ns.\n" % mt)
+
+    out.append("The optimised candidate (benchmarks/core/optimised/, same "
+               "algorithm and random stream, libm replaced) against the "
+               "core, alpha ~ U(0, 90 deg) [ns per hit, core -> optimised "
+               "(speed-up)]:\n")
+    out.append("| configuration | " + " | ".join(
+        "Delta = %s deg" % d for d in DELTAS) + " |")
+    out.append("|---|" + "---|"*len(DELTAS))
+    for label, spin, lateral, dim in CONFIGS:
+        cells = []
+        for d in DELTAS:
+            a = ns(t, rough_name(spin, lateral, dim, "mix", d))
+            b = ns(t, rough_name(spin, lateral, dim, "mix", d,
+                                 model="roughOpt"))
+            cells.append("%.0f -> %.0f (x%.2f)" % (a, b, a/b))
+        out.append("| %s | %s |" % (label, " | ".join(cells)))
+    out.append("")
+
+    out.append("By incidence angle, 3-D with spin [ns per hit]:\n")
+    out.append("| alpha [deg] | smooth | " + " | ".join(
+        "Delta = %s" % d for d in DELTAS) + " |")
+    out.append("|---|---|" + "---|"*len(DELTAS))
+    for a in ALPHAS:
+        smooth = ns(t, smooth_name("1", "3", a))
+        out.append("| %s | %.1f | %s |" % (alpha_label(a), smooth, " | ".join(
+            "%.0f" % ns(t, rough_name("1", "0", "3", a, d)) for d in DELTAS)))
+    return "\n".join(out) + "\n"
+
+
+def figure(rows):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    t = index(rows)
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    colors = ["C0", "C1", "C2", "C3"]
+    ax = axes[0]
+    Ds = [float(d) for d in DELTAS]
+    for (label, spin, lateral, dim), c in zip(CONFIGS, colors):
+        ax.plot(Ds, [ns(t, rough_name(spin, lateral, dim, "mix", d))
+                     for d in DELTAS], "o-", color=c, label="rough, " + label)
+        ax.plot(Ds, [ns(t, rough_name(spin, lateral, dim, "mix", d,
+                                      model="roughOpt")) for d in DELTAS],
+                "x--", color=c, lw=1)
+        ax.axhline(ns(t, smooth_name(spin, dim, "mix")), color=c, ls=":",
+                   lw=1)
+    ax.axhline(ns(t, "hit/model:standard/alpha:mix"), color="k", ls="--",
+               lw=1, label="StandardWallInteraction rebound")
+    ax.axhline(TARGET_NS, color="r", lw=1, label="target 60 ns")
+    ax.set_yscale("log")
+    ax.set_xlabel("roughness angle Delta [deg]")
+    ax.set_ylabel("CPU time per wall hit [ns]")
+    ax.set_title("alpha ~ U(0, 90 deg); dashed: optimised candidate;\n"
+                 "dotted: smooth rebound", fontsize=9)
+    ax.legend(fontsize=7)
+    ax.grid(True, which="both", alpha=0.3)
+
+    ax = axes[1]
+    alphas = [a for a in ALPHAS if a != "mix"]
+    x = [float(a) for a in alphas]
+    for d, c in zip(DELTAS, ["C7", "C0", "C1", "C2", "C3"]):
+        ax.plot(x, [ns(t, rough_name("1", "0", "3", a, d)) for a in alphas],
+                "o-", color=c, label="rough, Delta = %s deg" % d)
+    ax.plot(x, [ns(t, smooth_name("1", "3", a)) for a in alphas], "s:",
+            color="k", label="smooth rebound")
+    ax.axhline(TARGET_NS, color="r", lw=1)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("incidence angle alpha [deg]")
+    ax.set_title("3-D, with spin")
+    ax.legend(fontsize=7)
+    ax.grid(True, which="both", alpha=0.3)
+    fig.tight_layout()
+    path = os.path.join(bc.FIGURES, "bench-hit-cost.png")
+    fig.savefig(path, dpi=110)
+    print("wrote " + path)
+
+
+def collected(hit_loop, argv, hits):
+    out = subprocess.run(
+        ["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null",
+         hit_loop] + argv + [str(hits)],
+        capture_output=True, text=True, check=True).stderr
+    return int(re.search(r"Collected : (\d+)", out).group(1))
+
+
+def instructions(args):
+    if not shutil.which("valgrind"):
+        print("valgrind not found: no instruction counts")
+        return
+    cases = [(m, "1", "0", "3", "mix", d) for m in ("rough", "roughOpt")
+             for d in DELTAS] + [
+        (m, s, l, dim, "mix", "8") for m in ("rough", "roughOpt")
+        for s, l, dim in (("1", "1", "3"), ("0", "0", "3"), ("0", "0", "2"))
+    ] + [
+        ("smooth", "1", "0", "3", "mix", "8"),
+        ("smooth", "0", "0", "3", "mix", "8"),
+        ("standard", "0", "0", "3", "mix", "8"),
+        ("none", "1", "0", "3", "mix", "8"),
+    ]
+    n1, n2 = 50000, 150000
+    rows = []
+    for case in cases:
+        argv = list(case)
+        per_hit = (collected(args.hit_loop, argv, n2)
+                   - collected(args.hit_loop, argv, n1))/(n2 - n1)
+        rows.append(dict(model=case[0], spin=case[1], lateral=case[2],
+                         dim=case[3], alpha=case[4], Delta=case[5],
+                         instructions_per_hit="%.1f" % per_hit))
+        print("%s: %.1f instructions per hit" % (" ".join(argv), per_hit))
+    with open(os.path.join(bc.RESULTS, "hit-instructions.csv"), "w",
+              newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    lines = ["| model | spin | lateral | dim | alpha | Delta | instructions "
+             "per hit |", "|---|---|---|---|---|---|---|"]
+    for r in rows:
+        lines.append("| %s |" % " | ".join(r.values()))
+    with open(os.path.join(bc.RESULTS, "hit-instructions.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def profile(args):
+    """Where the time and the instructions of one configuration go: perf
+    (software clock) on the Google Benchmark, callgrind on hitLoop"""
+    name = "hit/model:rough/spin:1/lateral:0/dim:3/alpha:mix/Delta:8/rng:foam"
+    out = []
+    if shutil.which("perf"):
+        data = os.path.join(bc.RESULTS, "..", "..", "build", "perf.hit.data")
+        subprocess.run(["perf", "record", "-e", "cpu-clock", "-F", "10000",
+                        "-o", data, args.bench,
+                        "--benchmark_filter=^" + name + "$",
+                        "--benchmark_min_time=2"], check=True,
+                       capture_output=True)
+        out.append("# perf record -e cpu-clock: " + name)
+        out.append(subprocess.run(
+            ["perf", "report", "-i", data, "--stdio", "--no-children",
+             "--percent-limit", "0.5"], capture_output=True,
+            text=True).stdout)
+    if shutil.which("valgrind") and args.hit_loop:
+        cg = os.path.join(bc.RESULTS, "..", "..", "build", "callgrind.hit")
+        subprocess.run(["valgrind", "--tool=callgrind",
+                        "--callgrind-out-file=" + cg, args.hit_loop, "rough",
+                        "1", "0", "3", "mix", "8", "200000"], check=True,
+                       capture_output=True)
+        out.append("# callgrind, hitLoop rough 1 0 3 mix 8 200000 "
+                   "(inclusive counts; divide by 2e5 for per hit)")
+        out.append(subprocess.run(
+            ["callgrind_annotate", "--inclusive=yes", cg],
+            capture_output=True, text=True).stdout[:12000])
+    path = os.path.join(bc.RESULTS, "hit-profile.txt")
+    with open(path, "w") as f:
+        f.write("\n".join(out))
+    print("wrote " + path)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__)
+    p.add_argument("--bench", required=True, help="benchRoughWallCore")
+    p.add_argument("--hit-loop", help="hitLoop (for --instructions)")
+    p.add_argument("--min-time", type=float, default=0.2)
+    p.add_argument("--repetitions", type=int, default=5)
+    p.add_argument("--instructions", action="store_true",
+                   help="also count instructions per hit with callgrind")
+    p.add_argument("--plot-only", action="store_true",
+                   help="redo table and figure from the stored CSV")
+    p.add_argument("--profile", action="store_true",
+                   help="only: perf and callgrind profiles of one hit")
+    args = p.parse_args()
+    bc.ensure_dirs()
+    if args.profile:
+        profile(args)
+        return
+    if args.plot_only:
+        rows = load()
+    else:
+        info = bc.write_machine("hit-cost")
+        print(bc.machine_markdown(info))
+        rows = measure(args)
+    text = markdown(rows, None)
+    with open(os.path.join(bc.RESULTS, "hit-cost.md"), "w") as f:
+        f.write(text)
+    print(text)
+    figure(rows)
+    if args.instructions:
+        instructions(args)
+
+
+if __name__ == "__main__":
+    main()
