@@ -133,6 +133,26 @@ Vec3 incidenceTangent
     return std::cos(phi)*a + std::sin(phi)*b;
 }
 
+//- After a collision with the mean-wall plane v.N = -e v.N >= 0 up to
+//  round-off. Where the round-off wins (e = 0, or grazing incidence on a wall
+//  not aligned with the axes: v.N is then below the rounding error of the
+//  tangential components) project the normal part out, and if rounding leaves
+//  v.N < 0 again, lift it by a few ulps of |v| (a relative energy change of
+//  order 1e-28): the particle must not stay in the wall.
+inline void leaveMeanWall(Vec3& velocity, const Vec3& wallNormal)
+{
+    const double margin = std::max
+    (
+        16*std::numeric_limits<double>::epsilon()
+       *velocity.lpNorm<Eigen::Infinity>(),    // no underflow of |v|^2
+        16*std::numeric_limits<double>::denorm_min()
+    );
+    for (int i = 0; i < 4 && velocity.dot(wallNormal) < 0; ++i)
+    {
+        velocity -= (velocity.dot(wallNormal) - i*margin)*wallNormal;
+    }
+}
+
 } // namespace detail
 
 //- One hit of a particle on the rough wall. velocity is relative to the wall,
@@ -162,23 +182,7 @@ RoughWallReport collideWithRoughWall
         if (draw >= p.maxFacetCollisions)
         {
             collideWithFacet<withSpin>(velocity, spin, wallNormal, radius, p.material);
-            // v.N = -e v.N >= 0 up to round-off. Where the round-off wins
-            // (e = 0, or grazing incidence on a wall not aligned with the
-            // axes: v.N is then below the rounding error of the tangential
-            // components) project the normal part out, and if rounding
-            // leaves v.N < 0 again, lift it by a few ulps of |v| (a relative
-            // energy change of order 1e-28): the particle must not stay in
-            // the wall.
-            const double margin = std::max
-            (
-                16*std::numeric_limits<double>::epsilon()
-               *velocity.lpNorm<Eigen::Infinity>(),    // no underflow of |v|^2
-                16*std::numeric_limits<double>::denorm_min()
-            );
-            for (int i = 0; i < 4 && velocity.dot(wallNormal) < 0; ++i)
-            {
-                velocity -= (velocity.dot(wallNormal) - i*margin)*wallNormal;
-            }
+            detail::leaveMeanWall(velocity, wallNormal);
             report.fallback = true;
             break;
         }
@@ -220,6 +224,14 @@ RoughWallReport collideWithRoughWall
         const Regime regime =
             collideWithFacet<withSpin>(velocity, spin, n, radius, p.material);
         ++(regime == Regime::noSlip ? report.noSlip : report.sliding);
+        if (n == wallNormal)
+        {
+            // A facet parallel to the mean wall (Delta = 0) leaves v.N =
+            // -e v.N >= 0: a negative value is round-off, not a reason to
+            // collide again (with e = 0 it would run to the bound every time)
+            detail::leaveMeanWall(velocity, wallNormal);
+            break;
+        }
     }
     return report;
 }
