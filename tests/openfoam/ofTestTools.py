@@ -221,7 +221,7 @@ def set_subdomains(case, nprocs):
         f.write(text)
 
 
-_NUMBER = r"[-+0-9.eE]+|nan|inf|-inf"
+_NUMBER = r"[-+0-9.eE]+|nan|-nan|inf|-inf"
 
 
 def read_field(path):

@@ -209,33 +209,10 @@ def read_log(case, log):
     return [s for s in steps if s["parcels"] is not None]
 
 
-_NUMBER = r"[-+0-9.eE]+|nan|-nan|inf|-inf"
-
-
-def read_field(path):
-    """An ASCII Lagrangian field: (n,) scalars or (n, 3) vectors."""
-    with open(path) as f:
-        text = f.read()
-    body = text[text.index("}", text.index("FoamFile")) + 1:]
-    body = re.sub(r"//.*", "", body)
-    m = re.search(r"(\d+)\s*\{\s*(\([^)]*\)|" + _NUMBER + r")\s*\}", body)
-    m_list = re.search(r"(\d+)\s*\(", body)
-    if m and (not m_list or m.start() <= m_list.start()):
-        n = int(m.group(1))
-        value = m.group(2)
-        if value.startswith("("):
-            v = np.array([float(t) for t in value.strip("()").split()])
-            return np.tile(v, (n, 1))
-        return np.full(n, float(value))
-    n = int(m_list.group(1))
-    inner = body[m_list.end():body.rindex(")")]
-    if n == 0:
-        return np.zeros(0)
-    if "(" in inner:
-        values = np.array([float(t) for t in
-                           inner.replace("(", " ").replace(")", " ").split()])
-        return values.reshape(n, 3)
-    return np.array([float(t) for t in inner.split()])
+# One reader of Lagrangian fields for all the OpenFOAM-level tests
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "openfoam"))
+from ofTestTools import _NUMBER, read_field  # noqa: E402
 
 
 def read_positions(path):
