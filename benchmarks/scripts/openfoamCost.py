@@ -153,7 +153,7 @@ def tutorial_cost(args):
         order = ("smooth", "rough2.5") if rnd % 2 == 0 \
             else ("rough2.5", "smooth")
         for variant in order:
-            wall, summary, _ = tw.run_case(
+            wall, _, summary, _ = tw.run_case(
                 tut, carrier_time, height, "cost-%s" % variant, variant,
                 195e-6, parcels, spin_up, end_time, 1e-3)
             case = os.path.join(tut, "run", "cost-%s" % variant)
@@ -193,6 +193,22 @@ def tutorial_cost(args):
               "w") as f:
         f.write(text)
     print(text)
+    # The model's own share of the rough run: a perf profile of one more run
+    if shutil.which("perf"):
+        case = os.path.join(tut, "run", "cost-rough2.5")
+        data = os.path.join(case, "perf.data")
+        sh(["perf", "record", "-e", "cpu-clock", "-F", "1000", "-o", data,
+            SOLVER], case, "log.perf")
+        out = [subprocess.run(
+            ["perf", "report", "-i", data, "--stdio", "--no-children",
+             "--sort", sort, "--percent-limit", "0.3"],
+            capture_output=True, text=True).stdout for sort in ("dso", "sym")]
+        path = os.path.join(bc.RESULTS, "openfoam-tutorial-profile-rough.txt")
+        with open(path, "w") as f:
+            f.write("# perf record -e cpu-clock %s: tutorial, rough2.5, %d "
+                    "parcels, %g s\n" % (SOLVER, parcels, end_time))
+            f.write("\n".join(out))
+        print("wrote " + path)
 
 
 def measure(args):
