@@ -13,7 +13,9 @@ load hits every variant alike). Case: benchmarks/openfoam/wallBox, ballistic
 parcels (no forces, no gravity, 110 um glass) in a closed 0.1 m box of 2x1x1
 cells with maxCo 1, injected at (40 27 13) m/s, icoUncoupledKinematicParcelFoam
 (colliding cloud: spin is carried), dt = 1 ms: about 0.8 wall hits per parcel
-and time step, the most wall-dominated a particle case gets.
+and time step, the most wall-dominated a particle case gets. Simulated time
+0.2 s, or 4000 parcel-seconds over the parcels if that is longer (1000
+parcels: 4 s), so that every run takes seconds.
 
 Measured per run: the solver's CPU time for the time steps (the last
 ExecutionTime minus the first: start-up and mesh reading excluded), the wall
@@ -218,15 +220,18 @@ def measure(args):
     configs = [(n, 1) for n in args.parcels] + [
         (args.parcels[min(1, len(args.parcels) - 1)], 2)] * args.mpi
     for parcels, np in configs:
-        case, positions = make_case(work, parcels, np, args.end_time)
-        smooth_hits = specular_hits(positions, args.end_time)
+        # at least parcel_seconds of parcel time per run: small runs long
+        # enough for the 0.01 s resolution of ExecutionTime
+        end_time = max(args.end_time, args.parcel_seconds/parcels)
+        case, positions = make_case(work, parcels, np, end_time)
+        smooth_hits = specular_hits(positions, end_time)
         for rnd in range(args.rounds):
             order = VARIANTS if rnd % 2 == 0 else VARIANTS[::-1]
             for variant in order:
                 r = run(case, variant, np)
                 hits = r["hits"] if variant == "rough" else smooth_hits
                 row = dict(parcels=parcels, np=np, round=rnd,
-                           variant=variant, hits=hits,
+                           variant=variant, end_time=end_time, hits=hits,
                            step_cpu="%.3f" % r["step_cpu"],
                            wall="%.3f" % r["wall"],
                            process_cpu="%.3f" % r["process_cpu"],
@@ -270,6 +275,7 @@ def summarise(rows):
                 ratios.append(t["rough"]/t["standard"])
                 ratios_rebound.append(t["rebound"]/t["standard"])
         out.append(dict(parcels=parcels, np=np, med=med, rounds=len(rounds),
+                        end_time=float(rs[0].get("end_time", "nan")),
                         ratio=statistics.median(ratios),
                         ratio_min=min(ratios), ratio_max=max(ratios),
                         ratio_rebound=statistics.median(ratios_rebound)))
@@ -277,19 +283,20 @@ def summarise(rows):
 
 
 def table(summary):
-    lines = ["| parcels | MPI ranks | rounds | standard: CPU s, hits, Mhits/s"
+    lines = ["| parcels | simulated s | MPI ranks | rounds | standard: CPU s, hits, Mhits/s"
              " | rebound: CPU s | rough: CPU s, hits, Mhits/s | rough/standard"
              " CPU (median, min-max of rounds) | rebound/standard | rough - "
              "standard per hit [ns] |",
-             "|---|---|---|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|---|---|---|"]
     for s in summary:
         m = s["med"]
         st, rb, ro = m["standard"], m["rebound"], m["rough"]
         extra = (ro["step_cpu"]/ro["hits"] - st["step_cpu"]/st["hits"])*1e9
         lines.append(
-            "| %d | %d | %d | %.2f, %d, %.2f | %.2f | %.2f, %d, %.2f | "
+            "| %d | %g | %d | %d | %.2f, %d, %.2f | %.2f | %.2f, %d, %.2f | "
             "%.3f (%.3f-%.3f) | %.3f | %.0f |" % (
-                s["parcels"], s["np"], s["rounds"], st["step_cpu"],
+                s["parcels"], s["end_time"], s["np"], s["rounds"],
+                st["step_cpu"],
                 st["hits"], st["hits"]/st["step_cpu"]/1e6, rb["step_cpu"],
                 ro["step_cpu"], ro["hits"], ro["hits"]/ro["step_cpu"]/1e6,
                 s["ratio"], s["ratio_min"], s["ratio_max"],
@@ -349,7 +356,10 @@ def main():
                                                   "benchmarks", "openfoam"))
     p.add_argument("--parcels", default="1000,10000,100000")
     p.add_argument("--rounds", type=int, default=5)
-    p.add_argument("--end-time", type=float, default=0.2)
+    p.add_argument("--end-time", type=float, default=0.2,
+                   help="simulated time, at least (see --parcel-seconds)")
+    p.add_argument("--parcel-seconds", type=float, default=4000,
+                   help="end time at least this over the parcels")
     p.add_argument("--mpi", type=int, default=1,
                    help="also run the middle parcel count on 2 ranks (0: no)")
     p.add_argument("--quick", action="store_true")
@@ -363,6 +373,7 @@ def main():
     args.parcels = [int(float(x)) for x in args.parcels.split(",")]
     if args.quick:
         args.parcels, args.rounds, args.end_time = [500, 5000], 2, 0.05
+        args.parcel_seconds = 0
     bc.ensure_dirs()
     if args.profile:
         profile(args)

@@ -118,8 +118,12 @@ def figures():
             ax.set_ylabel(ylabel, fontsize=8)
         for ax in list(axes.flat)[len(hs):]:
             ax.axis("off")
-        handles, labels = axes.flat[0].get_legend_handles_labels()
-        fig.legend(handles, labels, loc="lower center", ncol=3, fontsize=8)
+        legend = {}
+        for ax in axes.flat:   # every sampler, also those absent at h = 0
+            for h_, l_ in zip(*ax.get_legend_handles_labels()):
+                legend.setdefault(l_, h_)
+        fig.legend(list(legend.values()), list(legend.keys()),
+                   loc="lower center", ncol=3, fontsize=8)
         fig.tight_layout(rect=(0, 0.06, 1, 1))
         path = os.path.join(bc.FIGURES, fname)
         fig.savefig(path, dpi=100)

@@ -1,12 +1,13 @@
 // roughWallInteraction benchmarks: an optimised copy of the core's
 // collideWithRoughWall (src/roughWallCore/roughWallCollision.hpp and
-// facetAngleSampler.hpp), the same algorithm drawing the same uniform
-// numbers in the same order, with
+// facetAngleSampler.hpp, as of commit f9ea2c9), the same algorithm drawing
+// the same uniform numbers in the same order, with
 //   - libm's atan2, sincos, log1p replaced by fastMath.hpp (<= 2.4 ulp),
 //   - a squeeze in the truncated-normal rejection for h < 1: -2 log(1-u) >= 2u,
 //     so 2u >= s^2 accepts without the logarithm (same decisions),
-//   - one square root and one division for the incidence frame instead of
-//     two and six, the lateral tilt by Rodrigues' formula.
+//   - one division (a reciprocal) for each of the four normalisations of the
+//     incidence frame instead of three, the tangent's length computed once,
+//   - the lateral tilt by Rodrigues' formula instead of Eigen's AngleAxis.
 // For the same random stream its results agree with the core's to round-off
 // (compareOptimised measures it); it is a candidate for the core.
 // Copyright (C) 2026 roughWallInteraction authors. SPDX-License-Identifier: GPL-3.0-or-later
@@ -88,7 +89,8 @@ double sampleFacetAngle(double alpha, double Delta, Uniform01& uniform01)
         return 0;
     }
     const double s = truncatedStandardNormal(alpha/Delta, uniform01);
-    const double R = std::sqrt(s*s + twoExponential(uniform01));
+    // as the core: R >= s also where s*s underflows
+    const double R = std::max(s, std::sqrt(s*s + twoExponential(uniform01)));
     return Delta*(R - 2*s);
 }
 
@@ -168,16 +170,7 @@ RoughWallReport collideWithRoughWall
             (
                 velocity, spin, wallNormal, radius, p.material
             );
-            const double margin = std::max
-            (
-                16*std::numeric_limits<double>::epsilon()
-               *velocity.lpNorm<Eigen::Infinity>(),
-                16*std::numeric_limits<double>::denorm_min()
-            );
-            for (int i = 0; i < 4 && velocity.dot(wallNormal) < 0; ++i)
-            {
-                velocity -= (velocity.dot(wallNormal) - i*margin)*wallNormal;
-            }
+            roughWall::detail::leaveMeanWall(velocity, wallNormal);
             report.fallback = true;
             break;
         }
@@ -237,6 +230,12 @@ RoughWallReport collideWithRoughWall
             velocity, spin, n, radius, p.material
         );
         ++(regime == Regime::noSlip ? report.noSlip : report.sliding);
+        if (n == wallNormal)
+        {
+            // as the core: a facet parallel to the mean wall ends the hit
+            roughWall::detail::leaveMeanWall(velocity, wallNormal);
+            break;
+        }
     }
     return report;
 }
