@@ -7,16 +7,28 @@
 // in [0, 1) (a std:: engine through StdUniform01 below, OpenFOAM's
 // Random::sample01<scalar>() through a lambda).
 //
-// Exact sampler (no special functions, bounded cost for every alpha). With
-// x = beta/Delta and h = alpha/Delta the density of x is proportional to
-//     exp(-(x-h)^2/2) - exp(-(x+h)^2/2) = integral_{|x-h|}^{x+h} u exp(-u^2/2) du,
-// a mixture: draw s from N(0,1) truncated to (0, h), then R = sqrt(s^2 - 2 ln U)
-// (the Rayleigh tail beyond s) and gamma = Delta (R - 2 s). Derivation in
-// docs/theory.md. The truncated normal is drawn by rejection with acceptance
-// at least 0.61 (uniform proposal for h < 1, half-normal proposal above).
+// Exact sampler (bounded cost for every alpha, no special function in most
+// draws). With x = beta/Delta = (alpha + gamma)/Delta and h = alpha/Delta the
+// density of x > 0 is proportional to
+//     exp(-(x-h)^2/2) - exp(-(x+h)^2/2) = integral_{|x-h|}^{x+h} u exp(-u^2/2) du.
+// Two exact methods, chosen by h (derivations in docs/theory.md, section 3):
+//  - h >= 1: plain rejection. x = h + Z with Z ~ N(0, 1), kept if x > 0 and
+//    with probability 1 - exp(-2 x h); then gamma = Delta Z. Acceptance
+//    erf(h/sqrt 2) >= 0.68, above 0.997 for h >= 3; the exponential is
+//    evaluated only when a bound on it cannot decide (< 1 % of the draws
+//    for h >= 3).
+//  - h < 1: the mixture. s ~ N(0, 1) truncated to (0, h) by a uniform
+//    proposal s = h U1 kept if 2 E >= s^2, E = -ln(1 - U2) ~ Exp(1)
+//    (acceptance >= 0.61); given acceptance E - s^2/2 is again Exp(1) and
+//    independent of s (no memory), so R = sqrt(2 E) is the Rayleigh tail
+//    beyond s without another draw, and gamma = Delta (R - 2 s).
+// Normal variates by the ziggurat (standardNormal.hpp), logarithms by
+// fastMath.hpp.
 #pragma once
 
 #include "CollisionAngleDistribution.hpp"
+#include "fastMath.hpp"
+#include "standardNormal.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -42,75 +54,36 @@ public:
 namespace detail
 {
 
-//- Attempts of a rejection loop before its exact fallback; each attempt is
-//  accepted with probability >= 0.6, so the fallback has probability < 1e-39.
-constexpr int maxRejectionAttempts = 100;
-
 //- -2 ln(1 - U) for U in [0, 1): twice a unit exponential, never infinite
 template<class Uniform01>
 double twoExponential(Uniform01& uniform01)
 {
-    return -2*std::log1p(-uniform01());
+    return -2*fastMath::log1pMinus(uniform01());
 }
 
-//- Exact fallback for truncatedStandardNormal: inverse CDF by bisection
-template<class Uniform01>
-double truncatedStandardNormalByInversion(double h, Uniform01& uniform01)
+//- Accept with probability 1 - exp(-y), y > 0, given U uniform in [0, 1):
+//  U < 1 - exp(-y). exp(-y) <= 1/(1 + y + y^2/2) accepts and
+//  exp(-y) >= 1 - y rejects without the exponential.
+inline bool acceptOneMinusExp(double y, double U)
 {
-    const double target = uniform01()*gaussianMass(0, h);
-    double lo = 0, hi = h;
-    for (int i = 0; i < 200 && hi - lo > 1e-16*hi; ++i)
+    const double keep = 1 - U;
+    if (keep*(1 + y*(1 + 0.5*y)) > 1)
     {
-        const double mid = 0.5*(lo + hi);
-        (gaussianMass(0, mid) < target ? lo : hi) = mid;
+        return true;
     }
-    return 0.5*(lo + hi);
+    if (1 - y >= keep)
+    {
+        return false;
+    }
+    return std::exp(-y) < keep;
 }
 
 } // namespace detail
 
-//- Standard normal variate truncated to (0, h); 0 for h <= 0
+//- Sample of gamma ~ P(gamma, alpha) by inversion of the CDF (below); the
+//  exact fallback of sampleFacetAngle's rejection loops
 template<class Uniform01>
-double truncatedStandardNormal(double h, Uniform01& uniform01)
-{
-    if (!(h > 0))
-    {
-        return 0;
-    }
-    if (h < 1)
-    {
-        // Uniform proposal on (0, h), accepted with exp(-s^2/2) >= 0.61
-        for (int i = 0; i < detail::maxRejectionAttempts; ++i)
-        {
-            const double s = h*uniform01();
-            if (detail::twoExponential(uniform01) >= s*s)
-            {
-                return s;
-            }
-        }
-    }
-    else
-    {
-        // Half-normal proposals, two per Box-Muller pair, accepted with
-        // probability erf(h/sqrt2) >= 0.68
-        for (int i = 0; i < detail::maxRejectionAttempts; i += 2)
-        {
-            const double r = std::sqrt(detail::twoExponential(uniform01));
-            const double theta = 2*pi*uniform01();
-            const double s1 = r*std::abs(std::cos(theta));
-            if (s1 < h)
-            {
-                return s1;
-            }
-            const double s2 = r*std::abs(std::sin(theta));
-            if (s2 < h)
-            {
-                return s2;
-            }
-        }
-    }
-    return detail::truncatedStandardNormalByInversion(h, uniform01);
-}
+double sampleFacetAngleByInversion(double alpha, double Delta, Uniform01& uniform01);
 
 //- Exact sample of gamma ~ P(gamma, alpha) [rad]. Delta = 0 gives 0.
 template<class Uniform01>
@@ -120,19 +93,49 @@ double sampleFacetAngle(double alpha, double Delta, Uniform01& uniform01)
     {
         return 0;
     }
-    const double s = truncatedStandardNormal(alpha/Delta, uniform01);
-    // R >= s; the max keeps it so where s*s underflows (alpha < 1e-154 Delta)
-    // and the exponential is 0: else gamma = -2 Delta s could pass -alpha
-    const double R = std::max(s, std::sqrt(s*s + detail::twoExponential(uniform01)));
-    return Delta*(R - 2*s);
+    const double h = alpha/Delta;
+    if (h >= 1)
+    {
+        for (int i = 0; i < detail::maxRejectionAttempts; ++i)
+        {
+            const double Z = standardNormal(uniform01);
+            const double x = h + Z;
+            const double gamma = Delta*Z;
+            // (gamma > -alpha is x > 0 but for the rounding of tiny Delta)
+            if
+            (
+                x > 0 && gamma > -alpha
+             && detail::acceptOneMinusExp(2*x*h, uniform01())
+            )
+            {
+                return gamma;
+            }
+        }
+    }
+    else
+    {
+        for (int i = 0; i < detail::maxRejectionAttempts; ++i)
+        {
+            const double s = h*uniform01();
+            const double twoE = detail::twoExponential(uniform01);
+            if (twoE >= s*s)
+            {
+                // R >= s, also where s*s underflows (alpha < 1e-154 Delta):
+                // else gamma = -2 Delta s could pass -alpha
+                const double R = std::max(s, std::sqrt(twoE));
+                return Delta*(R - 2*s);
+            }
+        }
+    }
+    return sampleFacetAngleByInversion(alpha, Delta, uniform01);
 }
 
 //- Sample of gamma ~ P(gamma, alpha) by inversion of the CDF: a monotone map
 //  from one uniform number. Safeguarded Newton on g = gamma/Delta (not on
 //  beta, whose digits are lost to alpha when alpha >> Delta), solving
 //  sf = 1 - U in the upper half and cdf = U in the lower half so that the
-//  residual keeps its relative accuracy. 5-20x slower than sampleFacetAngle;
-//  the test oracle.
+//  residual keeps its relative accuracy. 10-100x slower than
+//  sampleFacetAngle; the test oracle.
 template<class Uniform01>
 double sampleFacetAngleByInversion
 (

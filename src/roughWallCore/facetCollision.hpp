@@ -21,6 +21,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cmath>
 
 namespace roughWall
 {
@@ -63,17 +64,20 @@ Regime collideWithFacet
         contactVelocity -= radius*w.cross(n);
     }
     const Vec3 slip = contactVelocity - contactVelocity.dot(n)*n;
-    const double slipSpeed = slip.norm();
+    const double slip2 = slip.squaredNorm();
+    const double noSlipLimit = 3.5*material.mu0*jn;   // >= 0
 
     Vec3 jt;
     Regime regime;
-    if (slipSpeed <= 3.5*material.mu0*jn)
+    // |slip| <= limit, without the square root the rolling case does not need
+    if (slip2 <= noSlipLimit*noSlipLimit)
     {
         jt = -(2.0/7.0)*slip;
         regime = Regime::noSlip;
     }
     else
     {
+        const double slipSpeed = std::sqrt(slip2);
         const double magnitude = std::min(material.muD*jn, (2.0/7.0)*slipSpeed);
         jt = -(magnitude/slipSpeed)*slip;
         regime = Regime::sliding;

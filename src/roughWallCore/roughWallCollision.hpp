@@ -29,6 +29,8 @@
 
 #include "facetAngleSampler.hpp"
 #include "facetCollision.hpp"
+#include "fastMath.hpp"
+#include "standardNormal.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -84,8 +86,7 @@ double sampleLateralTilt(double Delta, Uniform01& uniform01)
 {
     for (int i = 0; i < maxRejectionAttempts; ++i)
     {
-        const double r = std::sqrt(twoExponential(uniform01));
-        const double delta = Delta*r*std::cos(2*pi*uniform01());
+        const double delta = Delta*standardNormal(uniform01);
         if (std::abs(delta) < maxFacetTilt)
         {
             return delta;
@@ -94,34 +95,24 @@ double sampleLateralTilt(double Delta, Uniform01& uniform01)
     return 0;
 }
 
-//- Unit tangent of the plane of incidence: along the tangential velocity, or
-//  random in the admissible wall directions at exactly normal incidence
+//- The plane of incidence of a velocity on the mean wall
+struct IncidenceFrame
+{
+    Vec3 tangent;    //!< unit, in the wall plane, along the tangential velocity
+    double alpha;    //!< incidence angle to the mean wall, [0, pi/2]
+};
+
+//- The unit tangent at exactly normal incidence: drawn uniformly among the
+//  admissible wall directions (in 2-D: either way along the plane)
 template<class Uniform01>
-Vec3 incidenceTangent
+Vec3 randomWallTangent
 (
-    const Vec3& tangential,
     const Vec3& wallNormal,
     const Vec3& emptyDirection,
     bool twoD,
     Uniform01& uniform01
 )
 {
-    const double length = tangential.norm();
-    if (length > 0)
-    {
-        // The tangential part is orthogonal to N only to the round-off of
-        // the velocity; near normal incidence that round-off is all there
-        // is, and a tangent not orthogonal to N makes the facet normal
-        // non-unit (energy not conserved). Orthogonalise the unit vector
-        // again; if little is left, the incidence is normal to round-off.
-        Vec3 t = tangential/length;
-        t -= t.dot(wallNormal)*wallNormal;
-        const double tLength = t.norm();
-        if (tLength > 0.5)
-        {
-            return t/tLength;
-        }
-    }
     if (twoD)
     {
         const Vec3 inPlane = emptyDirection.cross(wallNormal).normalized();
@@ -131,6 +122,44 @@ Vec3 incidenceTangent
     const Vec3 b = wallNormal.cross(a);
     const double phi = 2*pi*uniform01();
     return std::cos(phi)*a + std::sin(phi)*b;
+}
+
+//- Plane of incidence of a velocity moving into the wall. direction is the
+//  velocity or any positive multiple of it.
+template<class Uniform01>
+IncidenceFrame incidenceFrame
+(
+    const Vec3& direction,
+    const Vec3& wallNormal,
+    const Vec3& emptyDirection,
+    bool twoD,
+    Uniform01& uniform01
+)
+{
+    const double approach = std::max(-direction.dot(wallNormal), 0.0);
+    Vec3 tangential = direction + approach*wallNormal;
+    if (twoD)
+    {
+        tangential -= tangential.dot(emptyDirection)*emptyDirection;
+    }
+    // The tangential part is orthogonal to N only to the round-off of the
+    // velocity; near normal incidence that round-off is all there is, and a
+    // tangent not orthogonal to N makes the facet normal non-unit (energy not
+    // conserved). Project once more ("twice is enough"); if this removes
+    // much, the incidence is normal to round-off.
+    const double firstLength2 = tangential.squaredNorm();
+    tangential -= tangential.dot(wallNormal)*wallNormal;
+    const double length2 = tangential.squaredNorm();
+    if (length2 > 0.25*firstLength2 && length2 > 0)
+    {
+        const double length = std::sqrt(length2);
+        return {tangential*(1/length), fastMath::atan2FirstQuadrant(approach, length)};
+    }
+    return
+    {
+        randomWallTangent(wallNormal, emptyDirection, twoD, uniform01),
+        0.5*pi
+    };
 }
 
 //- After a collision with the mean-wall plane v.N = -e v.N >= 0 up to
@@ -177,6 +206,30 @@ RoughWallReport collideWithRoughWall
     const double Delta = p.roughnessAngle;
     const bool lateral = p.lateralTilt && !twoD && Delta > 0;
 
+    if (!(Delta > 0))
+    {
+        // A smooth wall: every facet is the mean wall, no plane of incidence
+        // or draw is needed
+        if (velocity.dot(wallNormal) < 0)
+        {
+            const Regime regime = collideWithFacet<withSpin>
+            (
+                velocity, spin, wallNormal, radius, p.material
+            );
+            detail::leaveMeanWall(velocity, wallNormal);
+            if (p.maxFacetCollisions > 0)
+            {
+                report.facetCollisions = 1;
+                ++(regime == Regime::noSlip ? report.noSlip : report.sliding);
+            }
+            else
+            {
+                report.fallback = true;   // as the loop below reports it
+            }
+        }
+        return report;
+    }
+
     for (int draw = 0; velocity.dot(wallNormal) < 0; ++draw)
     {
         if (draw >= p.maxFacetCollisions)
@@ -187,28 +240,32 @@ RoughWallReport collideWithRoughWall
             break;
         }
 
-        // Plane of incidence, from the direction of v, scaled by its largest
-        // component first: |v|^2 underflows for |v| < 1e-154 (a NaN
-        // direction made the lateral tilt return NaN velocities)
-        const Vec3 direction = (velocity/velocity.cwiseAbs().maxCoeff()).normalized();
-        const double normalPart = direction.dot(wallNormal);
-        Vec3 tangential = direction - normalPart*wallNormal;
-        if (twoD)
+        // The plane of incidence from the direction of v; |v|^2 underflows
+        // for |v| < 1e-154 (a NaN direction made the lateral tilt return NaN
+        // velocities) and overflows above 1e154: scale such v first
+        Vec3 direction = velocity;
+        const double speed2 = direction.squaredNorm();
+        if (!(speed2 > 1e-280 && speed2 < 1e280))
         {
-            tangential -= tangential.dot(emptyDirection)*emptyDirection;
+            direction /= direction.cwiseAbs().maxCoeff();
         }
-        const Vec3 t = detail::incidenceTangent
+        const detail::IncidenceFrame frame = detail::incidenceFrame
         (
-            tangential, wallNormal, emptyDirection, twoD, uniform01
+            direction, wallNormal, emptyDirection, twoD, uniform01
         );
-        const double alpha = std::atan2(-normalPart, tangential.norm());
 
-        const double gamma = detail::sampleFacetTilt(alpha, Delta, uniform01);
-        Vec3 n = std::cos(gamma)*wallNormal - std::sin(gamma)*t;
+        const double gamma = detail::sampleFacetTilt(frame.alpha, Delta, uniform01);
+        double sinGamma, cosGamma;
+        fastMath::sinCosHalfPi(gamma, sinGamma, cosGamma);
+        Vec3 n = cosGamma*wallNormal - sinGamma*frame.tangent;
         if (lateral)
         {
+            // Rotate n about the incidence direction u: v.n is kept
             const double delta = detail::sampleLateralTilt(Delta, uniform01);
-            n = Eigen::AngleAxisd(delta, direction)*n;
+            double sinDelta, cosDelta;
+            fastMath::sinCosHalfPi(delta, sinDelta, cosDelta);
+            const Vec3 u = direction*(1/direction.norm());
+            n = cosDelta*n + sinDelta*u.cross(n) + ((1 - cosDelta)*u.dot(n))*u;
         }
         if (velocity.dot(n) >= 0)
         {
@@ -226,7 +283,7 @@ RoughWallReport collideWithRoughWall
         ++(regime == Regime::noSlip ? report.noSlip : report.sliding);
         if (n == wallNormal)
         {
-            // A facet parallel to the mean wall (Delta = 0) leaves v.N =
+            // A facet parallel to the mean wall (gamma = 0) leaves v.N =
             // -e v.N >= 0: a negative value is round-off, not a reason to
             // collide again (with e = 0 it would run to the bound every time)
             detail::leaveMeanWall(velocity, wallNormal);

@@ -4,11 +4,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 #include "facetAngleSampler.hpp"
+#include "standardNormal.hpp"
 #include "testSupport.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -40,7 +42,8 @@ double ksDistance(std::vector<double> x, const Cdf& cdf)
     return d;
 }
 
-const std::vector<double> ratios{0, 1e-12, 1e-3, 0.1, 1, 3, 30, 1e5};
+// both methods of the exact sampler and their boundary at h = 1
+const std::vector<double> ratios{0, 1e-12, 1e-3, 0.1, 0.999, 1, 1.001, 3, 30, 1e5};
 
 template<class Sampler>
 void checkSampler(const Sampler& sampler, std::size_t n, unsigned seedBase)
@@ -127,21 +130,80 @@ TEST(FacetAngleSampler, KolmogorovSmirnovRejectsASamplerWithoutShadowCorrection)
     EXPECT_GT(ksDistance(gamma, [&](double g) { return P.cdf(g, alpha); }), 5*ksCritical(gamma.size()));
 }
 
-TEST(FacetAngleSampler, TruncatedNormalIsExact)
+TEST(StandardNormal, ZigguratTablesCloseTheTopLayer)
 {
-    for (double h : {1e-3, 0.5, 0.999, 1.0, 1.001, 3.0, 10.0})
+    // Every layer has the area V of the base strip with its tail; r is
+    // solved so that the top layer (up to the peak f(0) = 1) has it too
+    const auto& z = detail::normalZiggurat;
+    const double V = detail::NormalZiggurat::layerArea(z.r);
+    EXPECT_NEAR(z.r, 3.442619855899, 1e-9);   // Marsaglia and Tsang's value
+    for (int i = 1; i < z.layers - 1; ++i)
     {
-        Uniform uniform(77);
-        std::vector<double> s(100000);
-        for (auto& x : s)
+        const double area = z.x[i]*(detail::NormalZiggurat::f(z.x[i + 1]) - detail::NormalZiggurat::f(z.x[i]));
+        ASSERT_NEAR(area, V, 1e-12*V) << "layer " << i;
+    }
+    const double top = z.x[z.layers - 1]*(1 - detail::NormalZiggurat::f(z.x[z.layers - 1]));
+    EXPECT_NEAR(top, V, 1e-12*V);
+    EXPECT_EQ(z.x[z.layers], 0);
+}
+
+TEST(StandardNormal, PassesKolmogorovSmirnovAndMatchesTheTail)
+{
+    Uniform uniform(2027);
+    const std::size_t n = 1000000;
+    std::vector<double> z(n);
+    double sum = 0, sum2 = 0, sum4 = 0;
+    std::size_t tail = 0;
+    const double r = detail::normalZiggurat.r;
+    for (auto& x : z)
+    {
+        x = standardNormal(uniform);
+        ASSERT_TRUE(std::isfinite(x));
+        sum += x;
+        sum2 += x*x;
+        sum4 += x*x*x*x;
+        tail += std::abs(x) > r;
+    }
+    const auto Phi = [](double x) { return 0.5*std::erfc(-x/std::sqrt(2.0)); };
+    EXPECT_LT(ksDistance(z, Phi), ksCritical(n));
+    // Moments within 4 standard errors (sd of x^2: sqrt 2, of x^4: sqrt 96)
+    EXPECT_NEAR(sum/n, 0, 4/std::sqrt(double(n)));
+    EXPECT_NEAR(sum2/n, 1, 4*std::sqrt(2.0/n));
+    EXPECT_NEAR(sum4/n, 3, 4*std::sqrt(96.0/n));
+    // The tail beyond r (5.8e-4: KS cannot see it) within 4 standard errors
+    const double pTail = std::erfc(r/std::sqrt(2.0));
+    EXPECT_NEAR(double(tail)/n, pTail, 4*std::sqrt(pTail/n));
+}
+
+TEST(StandardNormal, TailSamplerIsExact)
+{
+    // Beyond r the density is proportional to exp(-x^2/2): KS against the
+    // conditional CDF 1 - erfc(x/sqrt2)/erfc(r/sqrt2)
+    Uniform uniform(31);
+    const double r = detail::normalZiggurat.r;
+    std::vector<double> x(100000);
+    for (auto& t : x)
+    {
+        t = detail::normalTail(r, uniform);
+        ASSERT_GE(t, r);
+    }
+    const double tailMass = std::erfc(r/std::sqrt(2.0));
+    EXPECT_LT(ksDistance(x, [&](double t) { return 1 - std::erfc(t/std::sqrt(2.0))/tailMass; }),
+              ksCritical(x.size()));
+}
+
+TEST(FacetAngleSampler, AcceptanceBoundsDecideAsTheExponential)
+{
+    // The bounds that skip exp(-y) must never decide otherwise than
+    // U < 1 - exp(-y) (grid away from the boundary itself)
+    for (double y = 1e-6; y < 1e3; y *= 1.07)
+    {
+        for (double U = 0.0005; U < 1; U += 0.001)
         {
-            x = truncatedStandardNormal(h, uniform);
-            ASSERT_GT(x, 0);
-            ASSERT_LT(x, h);
+            const double keep = 1 - U;
+            if (std::abs(std::exp(-y) - keep) < 1e-12) continue;
+            ASSERT_EQ(detail::acceptOneMinusExp(y, U), std::exp(-y) < keep) << "y=" << y << " U=" << U;
         }
-        const double mass = gaussianMass(0, h);
-        EXPECT_LT(ksDistance(s, [&](double x) { return gaussianMass(0, x)/mass; }), ksCritical(s.size()))
-            << "h=" << h;
     }
 }
 

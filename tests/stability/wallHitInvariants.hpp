@@ -60,11 +60,13 @@ constexpr long drawsPerFacetLimit = 100;
 
 //- The most uniform numbers one facet draw can take from any stream, even a
 //  stuck one: every rejection loop at its attempt limit (tangent 1, tilt
-//  attempts x (truncated normal 2 per attempt + its inversion 1 + Rayleigh 1),
-//  lateral tilt 2 per attempt). More means a loop without its bound.
+//  attempts x (facet-angle attempts x (a normal variate + 1) + the inversion
+//  fallback 1), lateral tilt attempts x a normal variate). More means a loop
+//  without its bound.
 constexpr long drawsPerFacetHardLimit = 1
-    + roughWall::detail::maxRejectionAttempts*(2*roughWall::detail::maxRejectionAttempts + 2)
-    + 2*roughWall::detail::maxRejectionAttempts;
+    + roughWall::detail::maxRejectionAttempts
+     *(roughWall::detail::maxRejectionAttempts*(roughWall::maxStandardNormalDraws + 1) + 1)
+    + roughWall::detail::maxRejectionAttempts*roughWall::maxStandardNormalDraws;
 
 //- Run the operator on a copy of the input with a uniform source
 template<class Uniform01>

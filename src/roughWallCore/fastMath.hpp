@@ -1,21 +1,28 @@
-// roughWallInteraction: the elementary functions of one wall hit, on the
-// restricted arguments the collision operator needs, without libm calls.
+// roughWallCore: framework-free physics of Derevich's rough-wall collision model.
 // Copyright (C) 2026 roughWallInteraction authors. SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The elementary functions of one wall hit, on the restricted arguments the
+// collision operator needs, without libm calls.
 //
 // glibc's atan2, sincos and log1p handle every argument (range reduction
 // for huge angles, infinities, NaN, errno) and cost 60-140 instructions a
 // call; here the arguments are known to be tame:
 //   atan2FirstQuadrant(y, x)  y, x >= 0, not both 0 (the incidence angle)
 //   sinCosHalfPi(x)           |x| <= pi/2 (the facet tilt)
-//   absCosSinTwoPi(u)         |cos 2 pi u|, |sin 2 pi u| for u in [0, 1)
-//                             (Box-Muller, only magnitudes are used)
 //   log1pMinus(u)             log(1 - u) for u in [0, 1)
-// The polynomial kernels are fdlibm's (Sun Microsystems 1993, "Permission
-// to use, copy, modify, and distribute this software is freely granted,
-// provided that this notice is preserved"), each with error below 1 ulp;
-// the reductions here add at most ~2 ulp (measured by fastMathAccuracy).
+// The polynomial kernels are fdlibm's, each with error below 1 ulp; the
+// reductions here add at most ~2 ulp (tests/core/testFastMath.cpp). fdlibm's
+// notice, preserved as it asks:
+//
+//   Copyright (C) 1993 by Sun Microsystems, Inc. All rights reserved.
+//
+//   Developed at SunPro, a Sun Microsystems, Inc. business.
+//   Permission to use, copy, modify, and distribute this
+//   software is freely granted, provided that this notice
+//   is preserved.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -123,19 +130,21 @@ constexpr double tanPio8 = 0.41421356237309504880;
 } // namespace detail
 
 //- atan2(y, x) for y >= 0, x >= 0, not both zero: an angle in [0, pi/2].
-//  One division; the argument of the kernel is at most tan(pi/8).
+//  fdlibm's three argument ranges (atan(a/b), pi/4 + atan((a - b)/(a + b))
+//  with a = min, b = max, and pi/2 minus either when y > x) chosen by
+//  selects, not branches: for incidence angles spread over [0, pi/2] the
+//  branches were mispredicted in half the hits. One division; the argument
+//  of the kernel is at most tan(pi/8) in magnitude.
 inline double atan2FirstQuadrant(double y, double x)
 {
     using namespace detail;
-    if (y <= tanPio8*x)
-    {
-        return kernelAtan(y/x);
-    }
-    if (x <= tanPio8*y)
-    {
-        return pio2Hi - (kernelAtan(x/y) - pio2Lo);
-    }
-    return pio4Hi + (kernelAtan((y - x)/(y + x)) + pio4Lo);
+    const double a = std::min(y, x);
+    const double b = std::max(y, x);
+    const double middle = a > tanPio8*b ? 1.0 : 0.0;
+    const double r =
+        middle*pio4Hi + (kernelAtan((a - middle*b)/(b + middle*a)) + middle*pio4Lo);
+    const double steep = pio2Hi - (r - pio2Lo);
+    return y > x ? steep : r;
 }
 
 //- sin and cos of x, |x| <= pi/2
@@ -155,23 +164,6 @@ inline void sinCosHalfPi(double x, double& s, double& c)
     const double r = (x - sign*pio2_1) - sign*pio2_1t;
     s = sign*kernelCos(r);
     c = -sign*kernelSin(r);
-}
-
-//- |cos(2 pi u)| and |sin(2 pi u)| for u in [0, 1). 4u = q + r with q the
-//  nearest integer and |r| <= 1/2 (exact), so 2 pi u = q pi/2 + r pi/2.
-inline void absCosSinTwoPi(double u, double& absCos, double& absSin)
-{
-    using namespace detail;
-    const double t = 4*u;
-    const int q = static_cast<int>(t + 0.5);
-    const double x = (t - q)*pio2Hi;
-    const double a = std::abs(kernelCos(x));
-    const double b = std::abs(kernelSin(x));
-    // odd q swaps them: a branch-free select on the bits
-    const std::uint64_t odd = -static_cast<std::uint64_t>(q & 1);
-    const std::uint64_t ab = bits(a), bb = bits(b);
-    absCos = fromBits((ab & ~odd) | (bb & odd));
-    absSin = fromBits((bb & ~odd) | (ab & odd));
 }
 
 //- log(1 - u) for u in [0, 1), as accurate as log1p(-u): v = 1 - u rounded,
