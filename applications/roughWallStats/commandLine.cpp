@@ -51,6 +51,8 @@ Distribution of one coefficient (one --alpha):
   --range LO,HI    bin range (default: covers all but 2e-4 of the probability)
 Output:
   --output FILE    write the CSV to FILE instead of stdout
+  --digits N       significant digits of the numbers, 1 .. 17      (12)
+                   (17: exact, every double reads back unchanged)
   --plot FILE      draw it (means +-1 sd against alpha, or pdf against
                    histogram) with matplotlib; FILE.png, .pdf or .svg
   --help           this text
@@ -184,7 +186,7 @@ Options parseCommandLine(int argc, const char* const argv[])
     {
         "--Delta", "--e", "--mu0", "--mud", "--spin", "--alpha", "--method",
         "--samples", "--seed", "--max-collisions", "--tolerance", "--threads",
-        "--pdf", "--bins", "--range", "--plot", "--output"
+        "--pdf", "--bins", "--range", "--plot", "--output", "--digits"
     };
     static const std::set<std::string> flags{"--recollide", "--lateral", "--help", "-h"};
 
@@ -412,6 +414,10 @@ Options parseCommandLine(int argc, const char* const argv[])
     if ((o.method == Method::montecarlo || o.pdf) && has("--tolerance"))
     {
         o.notes.push_back("--tolerance is used only by the quadrature statistics");
+    }
+    if (has("--digits"))
+    {
+        o.digits = static_cast<int>(integer("--digits", given["--digits"], 1, 17));
     }
     if (has("--plot")) o.plotFile = given["--plot"];
     if (has("--output")) o.outputFile = given["--output"];

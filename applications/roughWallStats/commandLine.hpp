@@ -41,6 +41,7 @@ struct Options
 
     std::string plotFile;
     std::string outputFile;
+    int digits = 12;              //!< significant digits of the numbers in the CSV
     int threads = 0;              //!< 0: one per core
     bool help = false;
 

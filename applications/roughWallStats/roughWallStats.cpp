@@ -200,6 +200,7 @@ int runStatistics(const Options& o)
     TableLayout layout;
     layout.monteCarlo = o.method == Method::montecarlo;
     layout.recollide = o.monteCarlo.recollide;
+    layout.digits = o.digits;
     return writeAndPlot(o, "stats", [&](std::ostream& os) { writeStatisticsTable(os, rows, layout); });
 }
 
@@ -287,7 +288,7 @@ int runPdf(const Options& o)
 
     return writeAndPlot(o, "pdf", [&](std::ostream& os)
     {
-        writePdfTable(os, bins, histogram.samples, withDensity);
+        writePdfTable(os, bins, histogram.samples, withDensity, o.digits);
     });
 }
 

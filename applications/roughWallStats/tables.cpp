@@ -13,17 +13,17 @@ namespace roughWallStats
 namespace
 {
 
-std::string field(double value)
+std::string field(double value, int digits)
 {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.12g", value);
+    char buffer[40];
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
     return buffer;
 }
 
 //- A field that is empty where undefined
-std::string field(double value, bool defined)
+std::string field(double value, int digits, bool defined)
 {
-    return defined ? field(value) : std::string();
+    return defined ? field(value, digits) : std::string();
 }
 
 } // namespace
@@ -52,27 +52,29 @@ void writeStatisticsTable
     }
     os << '\n';
 
+    const int d = layout.digits;
     for (const Statistics& s : rows)
     {
         const bool t = s.tangentialDefined;
-        os << field(s.alphaDeg) << ',' << field(s.meanKn) << ',' << field(s.sdKn) << ','
-           << field(s.meanAbsKn) << ',' << field(s.meanKt, t) << ',' << field(s.sdKt, t) << ','
-           << field(s.meanKOmega, t) << ',' << field(s.sdKOmega, t) << ','
-           << field(s.pNoSlip) << ',' << field(s.pWallward);
+        os << field(s.alphaDeg, d) << ',' << field(s.meanKn, d) << ',' << field(s.sdKn, d)
+           << ',' << field(s.meanAbsKn, d) << ',' << field(s.meanKt, d, t) << ','
+           << field(s.sdKt, d, t) << ',' << field(s.meanKOmega, d, t) << ','
+           << field(s.sdKOmega, d, t) << ',' << field(s.pNoSlip, d) << ','
+           << field(s.pWallward, d);
         if (layout.recollide)
         {
-            os << ',' << field(s.meanFacetCollisions) << ',' << field(s.pFallback);
+            os << ',' << field(s.meanFacetCollisions, d) << ',' << field(s.pFallback, d);
         }
         if (layout.monteCarlo)
         {
-            os << ',' << s.samples << ',' << field(s.seMeanKn) << ',' << field(s.seSdKn) << ','
-               << field(s.seMeanAbsKn) << ',' << field(s.seMeanKt, t) << ','
-               << field(s.seSdKt, t) << ',' << field(s.seMeanKOmega, t) << ','
-               << field(s.seSdKOmega, t) << ',' << field(s.sePNoSlip) << ','
-               << field(s.sePWallward);
+            os << ',' << s.samples << ',' << field(s.seMeanKn, d) << ','
+               << field(s.seSdKn, d) << ',' << field(s.seMeanAbsKn, d) << ','
+               << field(s.seMeanKt, d, t) << ',' << field(s.seSdKt, d, t) << ','
+               << field(s.seMeanKOmega, d, t) << ',' << field(s.seSdKOmega, d, t) << ','
+               << field(s.sePNoSlip, d) << ',' << field(s.sePWallward, d);
             if (layout.recollide)
             {
-                os << ',' << field(s.seMeanFacetCollisions);
+                os << ',' << field(s.seMeanFacetCollisions, d);
             }
         }
         os << '\n';
@@ -84,7 +86,8 @@ void writePdfTable
     std::ostream& os,
     const std::vector<PdfBin>& bins,
     long long samples,
-    bool withDensity
+    bool withDensity,
+    int d
 )
 {
     os << "k_lo,k_hi,k";
@@ -97,13 +100,13 @@ void writePdfTable
     {
         const double width = b.hi - b.lo;
         const double scale = 1/(static_cast<double>(samples)*width);
-        os << field(b.lo) << ',' << field(b.hi) << ',' << field(0.5*(b.lo + b.hi));
+        os << field(b.lo, d) << ',' << field(b.hi, d) << ',' << field(0.5*(b.lo + b.hi), d);
         if (withDensity)
         {
-            os << ',' << field(b.pdf) << ',' << field(b.pdfBin);
+            os << ',' << field(b.pdf, d) << ',' << field(b.pdfBin, d);
         }
-        os << ',' << field(b.count*scale) << ','
-           << field(std::sqrt(static_cast<double>(b.count))*scale) << ',' << b.count << '\n';
+        os << ',' << field(b.count*scale, d) << ','
+           << field(std::sqrt(static_cast<double>(b.count))*scale, d) << ',' << b.count << '\n';
     }
 }
 

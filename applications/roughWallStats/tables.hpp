@@ -3,7 +3,8 @@
 //
 // The CSV tables the tool writes: one row per incidence angle, or one row per
 // bin of a pdf. Undefined values (k_t, k_Omega at alpha = 90 deg) are empty
-// fields.
+// fields. Numbers have `digits` significant digits (%.<digits>g); 17 prints
+// every double exactly (strtod reads back the same double).
 #pragma once
 
 #include "coefficientDistribution.hpp"
@@ -19,6 +20,7 @@ struct TableLayout
 {
     bool monteCarlo = false;   //!< adds the se_* columns
     bool recollide = false;    //!< adds mean_facet_collisions, p_fallback
+    int digits = 12;           //!< significant digits of the numbers (--digits, 1..17)
 };
 
 void writeStatisticsTable
@@ -42,7 +44,8 @@ void writePdfTable
     std::ostream& os,
     const std::vector<PdfBin>& bins,
     long long samples,
-    bool withDensity
+    bool withDensity,
+    int digits = 12            //!< significant digits of the numbers (--digits, 1..17)
 );
 
 } // namespace roughWallStats

@@ -85,6 +85,80 @@ def case_badInput(binary, work):
     check("--Delta" in result.stdout and "--pdf" in result.stdout, "--help prints the usage")
 
 
+def significant_digits(text):
+    """Significant digits written in a %g field"""
+    mantissa = text.lower().split("e")[0].lstrip("-").replace(".", "")
+    return len(mantissa.lstrip("0"))
+
+
+def case_digits(binary, work):
+    """--digits N: %.Ng numbers (17: every double exactly), 12 by default;
+    bad values exit 2 naming the option and its range."""
+    args = ["--alpha", "0.5,5,11.6,45,89,90", "--spin", "0.3"]
+    default = run(binary, *args).stdout
+    d12 = run(binary, *args, "--digits", "12").stdout
+    d17 = run(binary, *args, "--digits=17").stdout
+    check(default == d12, "default output is --digits 12, byte for byte")
+    h12, rows12 = table(d12)
+    h17, rows17 = table(d17)
+    check(h12 == h17 == HEADER and len(rows12) == len(rows17) == 6, "same header and rows")
+    values = 0
+    longer = 0
+    for r12, r17 in zip(rows12, rows17):
+        for key in HEADER:
+            a, b = r12[key], r17[key]
+            if a == "" or b == "":
+                check(a == b == "", "alpha %s: %s empty in both" % (r12["alpha_deg"], key))
+                continue
+            x = float(b)
+            # %.17g identifies the double: printing it again gives the same
+            # text, and rounding it to 12 digits gives the default's text
+            if "%.17g" % x != b or "%.12g" % x != a:
+                raise Failure("alpha %s, %s: '%s' is not %%.17g, or not '%s' at 12 digits" % (
+                    r12["alpha_deg"], key, b, a))
+            if abs(float(a) - x) > 5e-12 * abs(x):
+                raise Failure("alpha %s, %s: 12 digits %s against 17 digits %s" % (
+                    r12["alpha_deg"], key, a, b))
+            values += 1
+            longer += significant_digits(b) > 12
+    check(values == 6 * 10 - 4, "%d values: 17-digit text is %%.17g and rounds to the 12-digit "
+          "text (agree within 5e-12 relative)" % values)
+    check(longer > values // 2, "%d of %d values have more than 12 significant digits" % (
+        longer, values))
+    mean_kn = [r["mean_kn"] for r in rows17[:4]]
+    check(all(significant_digits(v) >= 16 for v in mean_kn),
+          "mean k_n printed with 16-17 significant digits: " + ", ".join(mean_kn))
+
+    _, rows3 = table(run(binary, *args, "--digits", "3").stdout)
+    check(all("%.3g" % float(r17[k]) == r3[k] for r3, r17 in zip(rows3, rows17) for k in HEADER
+              if r3[k] != ""), "--digits 3 prints %.3g")
+
+    # The pdf and Monte Carlo tables follow --digits too (integers stay whole)
+    pdf = ["--pdf", "kt", "--alpha", "5", "--bins", "8", "--samples", "2000", "--seed", "3"]
+    _, p12 = table(run(binary, *pdf).stdout)
+    _, p17 = table(run(binary, *pdf, "--digits", "17").stdout)
+    check(all("%.12g" % float(b[k]) == a[k] and (k == "count" or "%.17g" % float(b[k]) == b[k])
+              for a, b in zip(p12, p17) for k in a), "pdf table with --digits 17")
+    check(all(a["count"] == b["count"] and "." not in b["count"] for a, b in zip(p12, p17)),
+          "pdf counts unchanged integers")
+    mc = ["--alpha", "20", "--method", "montecarlo", "--samples", "2000"]
+    _, m17 = table(run(binary, *mc, "--digits", "17").stdout)
+    check(m17[0]["samples"] == "2000" and significant_digits(m17[0]["se_mean_kn"]) > 12,
+          "Monte Carlo table with --digits 17")
+
+    for value in ["0", "18", "12.5", "-1"]:
+        result = run(binary, "--digits", value, expect=2)
+        check("--digits must be an integer in [1, 17]" in result.stderr and result.stdout == "",
+              "--digits %s -> exit 2, names --digits and [1, 17]" % value)
+    for extra, message in [(["--digits", "many"], "--digits needs a finite number"),
+                           (["--digits"], "--digits needs a value")]:
+        result = run(binary, *extra, expect=2)
+        check(message in result.stderr and result.stdout == "",
+              "%s -> exit 2: %s" % (" ".join(extra), message))
+    result = run(binary, "--help")
+    check("--digits N" in result.stdout and "1 .. 17" in result.stdout, "--help lists --digits")
+
+
 def case_monteCarlo(binary, work):
     """Monte Carlo: se_* columns, reproducible by seed, agrees with quadrature."""
     args = ["--alpha", "3,20,60", "--spin", "0.3", "--method", "montecarlo", "--samples", "200000"]

@@ -50,6 +50,7 @@ TEST(CommandLine, DefaultsAreThePapersSmallParticleCase)
     EXPECT_EQ(o.method, Method::quadrature);
     EXPECT_EQ(o.monteCarlo.samples, 1000000);
     EXPECT_FALSE(o.pdf);
+    EXPECT_EQ(o.digits, 12);
 }
 
 TEST(CommandLine, AnglesAndOptionForms)
@@ -74,6 +75,13 @@ TEST(CommandLine, AnglesAndOptionForms)
     EXPECT_EQ(p.bins, 30);
     EXPECT_EQ(p.rangeLo, 0.2);
     EXPECT_EQ(p.rangeHi, 1.4);
+
+    // --digits: 1..17, for the statistics and the pdf tables alike
+    EXPECT_EQ(parse({"--digits", "17"}).digits, 17);
+    EXPECT_EQ(parse({"--digits=1"}).digits, 1);
+    EXPECT_EQ(parse({"--method", "montecarlo", "--digits", "16"}).digits, 16);
+    EXPECT_EQ(parse({"--pdf", "kn", "--alpha", "5", "--digits", "15"}).digits, 15);
+    EXPECT_TRUE(parse({"--digits", "17"}).notes.empty());
 }
 
 // Every rejection names the option (and its range where it has one)
@@ -119,6 +127,15 @@ TEST(CommandLine, BadInputIsRejectedNamingTheOption)
         {{"--pdf", "kn", "--alpha", "5", "--range", "2,1"}, "--range must be LO,HI with LO < HI"},
         {{"--tolerance", "1e-20"}, "--tolerance must be in [1e-14, 1e-3]"},
         {{"--output", ""}, "--output needs a file name"},
+        {{"--digits", "0"}, "--digits must be an integer in [1, 17], got '0'"},
+        {{"--digits", "18"}, "--digits must be an integer in [1, 17], got '18'"},
+        {{"--digits", "12.5"}, "--digits must be an integer in [1, 17], got '12.5'"},
+        {{"--digits", "-3"}, "--digits must be an integer in [1, 17]"},
+        {{"--digits", "twelve"}, "--digits needs a finite number"},
+        {{"--digits", ""}, "--digits needs a finite number"},
+        {{"--digits"}, "--digits needs a value"},
+        {{"--alpha", "5", "--digits"}, "--digits needs a value"},
+        {{"--digits", "17", "--digits", "12"}, "--digits given twice"},
         {{"--frobnicate"}, "unknown option '--frobnicate'"},
         {{"--e", "0.5", "--e", "0.6"}, "--e given twice"},
         {{"--recollide=1"}, "--recollide takes no value"},
