@@ -6,8 +6,6 @@
 // benchmarks/scripts/hitCost.py:
 //   hit/model:rough/spin:1/lateral:0/dim:3/alpha:5/Delta:8/rng:foam
 //       collideWithRoughWall<spin> (sample, tilt, collide, re-collide)
-//   hit/model:roughOpt/...  the same with the optimised copy
-//       (benchmarks/core/optimised/fastRoughWallCollision.hpp)
 //   hit/model:smooth/spin:1/dim:3/alpha:5/rng:foam
 //       collideWithFacet<spin> with the mean-wall normal: a smooth hard-sphere
 //       rebound with the same friction law
@@ -21,7 +19,6 @@
 #include "benchRandom.hpp"
 #include "incidentTable.hpp"
 #include "referenceSamplers.hpp"
-#include "optimised/fastRoughWallCollision.hpp"
 
 #include "roughWallCollision.hpp"
 
@@ -54,7 +51,7 @@ std::string alphaName(double alphaDeg)
     return os.str();
 }
 
-template<bool withSpin, class Uniform, bool optimised = false>
+template<bool withSpin, class Uniform>
 void roughHit
 (
     benchmark::State& state,
@@ -78,23 +75,12 @@ void roughHit
         Vec3 v = table.velocity[i];
         Vec3 w = table.spin[i];
         i = (i + 1) & IncidentTable::mask;
-        roughWall::RoughWallReport report;
-        if constexpr (optimised)
-        {
-            report = roughWallOptimised::collideWithRoughWall<withSpin>
+        const roughWall::RoughWallReport report =
+            roughWall::collideWithRoughWall<withSpin>
             (
                 v, w, table.wallNormal, IncidentTable::radius, p, uniform01,
                 table.emptyDirection
             );
-        }
-        else
-        {
-            report = roughWall::collideWithRoughWall<withSpin>
-            (
-                v, w, table.wallNormal, IncidentTable::radius, p, uniform01,
-                table.emptyDirection
-            );
-        }
         benchmark::DoNotOptimize(v);
         benchmark::DoNotOptimize(w);
         facetCollisions += report.facetCollisions;
@@ -234,26 +220,6 @@ void registerAll()
             (
                 ("hit/model:rough/spin:0/lateral:0/dim:2" + tail + "/rng:foam").c_str(),
                 roughHit<false, FoamUniform01>, a, D, false, true
-            );
-            benchmark::RegisterBenchmark
-            (
-                ("hit/model:roughOpt/spin:1/lateral:0/dim:3" + tail + "/rng:foam").c_str(),
-                roughHit<true, FoamUniform01, true>, a, D, false, false
-            );
-            benchmark::RegisterBenchmark
-            (
-                ("hit/model:roughOpt/spin:0/lateral:0/dim:3" + tail + "/rng:foam").c_str(),
-                roughHit<false, FoamUniform01, true>, a, D, false, false
-            );
-            benchmark::RegisterBenchmark
-            (
-                ("hit/model:roughOpt/spin:1/lateral:1/dim:3" + tail + "/rng:foam").c_str(),
-                roughHit<true, FoamUniform01, true>, a, D, true, false
-            );
-            benchmark::RegisterBenchmark
-            (
-                ("hit/model:roughOpt/spin:0/lateral:0/dim:2" + tail + "/rng:foam").c_str(),
-                roughHit<false, FoamUniform01, true>, a, D, false, true
             );
         }
         // The random source: the core tests' mt19937_64 at Delta = 8 deg

@@ -7,8 +7,7 @@
 // Copyright (C) 2026 roughWallInteraction authors. SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Usage: hitLoop model spin lateral dim alpha Delta hits
-//   model    rough | roughOpt | smooth | standard | none (the loop and
-//            table alone); roughOpt: optimised/fastRoughWallCollision.hpp
+//   model    rough | smooth | standard | none (the loop and table alone)
 //   spin     0 | 1        lateral 0 | 1        dim 2 | 3
 //   alpha    incidence [deg], or "mix" for U(0, 90 deg)
 //   Delta    roughness angle [deg]
@@ -18,7 +17,6 @@
 #include "incidentTable.hpp"
 
 #include "roughWallCollision.hpp"
-#include "optimised/fastRoughWallCollision.hpp"
 
 #include <cstdio>
 #include <cstdlib>
@@ -30,7 +28,7 @@ using roughWall::Vec3;
 namespace
 {
 
-enum class Model { rough, roughOpt, smooth, standard, none };
+enum class Model { rough, smooth, standard, none };
 
 template<bool withSpin, Model model>
 double loop
@@ -51,14 +49,6 @@ double loop
         if constexpr (model == Model::rough)
         {
             roughWall::collideWithRoughWall<withSpin>
-            (
-                v, w, table.wallNormal, IncidentTable::radius, p, uniform01,
-                table.emptyDirection
-            );
-        }
-        else if constexpr (model == Model::roughOpt)
-        {
-            roughWallOptimised::collideWithRoughWall<withSpin>
             (
                 v, w, table.wallNormal, IncidentTable::radius, p, uniform01,
                 table.emptyDirection
@@ -120,11 +110,6 @@ int main(int argc, char** argv)
     {
         checksum = spin ? loop<true, Model::rough>(table, p, hits)
                         : loop<false, Model::rough>(table, p, hits);
-    }
-    else if (model == "roughOpt")
-    {
-        checksum = spin ? loop<true, Model::roughOpt>(table, p, hits)
-                        : loop<false, Model::roughOpt>(table, p, hits);
     }
     else if (model == "smooth")
     {

@@ -31,6 +31,10 @@ CONFIGS = [  # (label, spin, lateral, dim)
 ]
 ALPHAS = ["mix", "1", "5", "15", "45", "85"]
 DELTAS = ["0", "2", "8", "20", "45"]
+# The core before the speed work of issue 7 (libm's atan2/sincos/log1p,
+# Box-Muller proposals, a second normalisation of the tangent), measured on
+# the same machine at commit 22b71b2 and kept for the comparison
+BASELINE = "baseline-22b71b2"
 
 
 def alpha_label(a):
@@ -64,6 +68,16 @@ def measure(args):
 def load():
     with open(os.path.join(bc.RESULTS, "hit-cost.csv")) as f:
         return list(csv.DictReader(f))
+
+
+def baseline(filename, key):
+    """The stored results of the earlier core, indexed by key"""
+    path = os.path.join(bc.RESULTS, BASELINE, filename)
+    if not os.path.exists(path):
+        return {}
+    with open(path) as f:
+        return {r[key]: r for r in csv.DictReader(f)
+                if r.get("model", "rough") == "rough"}
 
 
 def index(rows):
@@ -122,22 +136,22 @@ def markdown(rows, machine):
     out.append("3-D with spin at Delta = 8 deg with mt19937_64 instead of "
                "Rand48: %.0f ns.\n" % mt)
 
-    out.append("The optimised candidate (benchmarks/core/optimised/, same "
-               "algorithm and random stream, libm replaced) against the "
-               "core, alpha ~ U(0, 90 deg) [ns per hit, core -> optimised "
-               "(speed-up)]:\n")
-    out.append("| configuration | " + " | ".join(
-        "Delta = %s deg" % d for d in DELTAS) + " |")
-    out.append("|---|" + "---|"*len(DELTAS))
-    for label, spin, lateral, dim in CONFIGS:
-        cells = []
-        for d in DELTAS:
-            a = ns(t, rough_name(spin, lateral, dim, "mix", d))
-            b = ns(t, rough_name(spin, lateral, dim, "mix", d,
-                                 model="roughOpt"))
-            cells.append("%.0f -> %.0f (x%.2f)" % (a, b, a/b))
-        out.append("| %s | %s |" % (label, " | ".join(cells)))
-    out.append("")
+    base = baseline("hit-cost.csv", "name")
+    if base:
+        out.append("Against the core before the speed work (commit 22b71b2, "
+                   "measured then on the same machine: %s), alpha ~ U(0, 90 "
+                   "deg) [ns per hit, before -> now (speed-up)]:\n" % BASELINE)
+        out.append("| configuration | " + " | ".join(
+            "Delta = %s deg" % d for d in DELTAS) + " |")
+        out.append("|---|" + "---|"*len(DELTAS))
+        for label, spin, lateral, dim in CONFIGS:
+            cells = []
+            for d in DELTAS:
+                name = rough_name(spin, lateral, dim, "mix", d)
+                a, b = ns(base, name), ns(t, name)
+                cells.append("%.0f -> %.0f (x%.2f)" % (a, b, a/b))
+            out.append("| %s | %s |" % (label, " | ".join(cells)))
+        out.append("")
 
     out.append("By incidence angle, 3-D with spin [ns per hit]:\n")
     out.append("| alpha [deg] | smooth | " + " | ".join(
@@ -155,6 +169,7 @@ def figure(rows):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     t = index(rows)
+    base = baseline("hit-cost.csv", "name")
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
     colors = ["C0", "C1", "C2", "C3"]
     ax = axes[0]
@@ -162,9 +177,8 @@ def figure(rows):
     for (label, spin, lateral, dim), c in zip(CONFIGS, colors):
         ax.plot(Ds, [ns(t, rough_name(spin, lateral, dim, "mix", d))
                      for d in DELTAS], "o-", color=c, label="rough, " + label)
-        ax.plot(Ds, [ns(t, rough_name(spin, lateral, dim, "mix", d,
-                                      model="roughOpt")) for d in DELTAS],
-                "x--", color=c, lw=1)
+        ax.plot(Ds, [ns(base, rough_name(spin, lateral, dim, "mix", d))
+                     for d in DELTAS], "x--", color=c, lw=1)
         ax.axhline(ns(t, smooth_name(spin, dim, "mix")), color=c, ls=":",
                    lw=1)
     ax.axhline(ns(t, "hit/model:standard/alpha:mix"), color="k", ls="--",
@@ -173,7 +187,7 @@ def figure(rows):
     ax.set_yscale("log")
     ax.set_xlabel("roughness angle Delta [deg]")
     ax.set_ylabel("CPU time per wall hit [ns]")
-    ax.set_title("alpha ~ U(0, 90 deg); dashed: optimised candidate;\n"
+    ax.set_title("alpha ~ U(0, 90 deg); dashed: the core before (22b71b2);\n"
                  "dotted: smooth rebound", fontsize=9)
     ax.legend(fontsize=7)
     ax.grid(True, which="both", alpha=0.3)
@@ -211,9 +225,8 @@ def instructions(args):
     if not shutil.which("valgrind"):
         print("valgrind not found: no instruction counts")
         return
-    cases = [(m, "1", "0", "3", "mix", d) for m in ("rough", "roughOpt")
-             for d in DELTAS] + [
-        (m, s, l, dim, "mix", "8") for m in ("rough", "roughOpt")
+    cases = [("rough", "1", "0", "3", "mix", d) for d in DELTAS] + [
+        ("rough", s, l, dim, "mix", "8")
         for s, l, dim in (("1", "1", "3"), ("0", "0", "3"), ("0", "0", "2"))
     ] + [
         ("smooth", "1", "0", "3", "mix", "8"),

@@ -34,6 +34,7 @@ import csv
 import math
 import os
 import re
+import resource
 import shutil
 import subprocess
 import sys
@@ -95,8 +96,12 @@ def prepare(work):
 
 
 def run_case(tut, carrier_time, height, name, variant, diameter, parcels,
-             spin_up, end_time, dt, seed=1):
-    """One tracking case as Allrun step 2 sets it up; returns wall seconds"""
+             spin_up, end_time, dt, seed=1, nprocs=1):
+    """One tracking case as Allrun step 2 sets it up, on nprocs MPI ranks
+    (decomposed as Allrun -parallel N does); returns the solver's wall
+    seconds, its CPU seconds (rank 0's last ExecutionTime), the summary and
+    the profiles of postProcess.py. caseInfo also gets processCpu: the CPU
+    time of the solver process(es), all ranks and mpirun together."""
     case = os.path.join(tut, "run", name)
     if os.path.isdir(case):
         shutil.rmtree(case)
@@ -143,14 +148,34 @@ def run_case(tut, carrier_time, height, name, variant, diameter, parcels,
                  "mu              %s" % entry("mu")]
     info += ["diameter        %r" % diameter, "height          %r" % height,
              "nParcels        %d" % parcels, "spinUp          %r" % spin_up,
-             "endTime         %r" % end_time, "nProcs          1",
+             "endTime         %r" % end_time, "nProcs          %d" % nprocs,
              "carrier         %s" % os.path.join(tut, "carrier"),
              "carrierTime     %s" % carrier_time]
+    if nprocs > 1:
+        # The tutorial's decomposition (Allrun -parallel N): method simple,
+        # n (N 1 1), i.e. N streamwise slabs of the 4-cell-long periodic
+        # section, each the full channel height
+        decompose = os.path.join(case, "system", "decomposeParDict")
+        set_entry(decompose, "numberOfSubdomains", str(nprocs))
+        set_entry(decompose, "n", "(%d 1 1)" % nprocs)
+        sh(["decomposePar", "-force"], case, "log.decomposePar")
+        cmd = ["mpirun", "-np", str(nprocs)]
+        if os.geteuid() == 0:
+            cmd.append("--allow-run-as-root")
+        if nprocs > (os.cpu_count() or 1):
+            cmd.append("--oversubscribe")
+        cmd += [SOLVER, "-parallel"]
+    else:
+        cmd = [SOLVER]
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
-    sh([SOLVER], case, "log." + SOLVER)
+    sh(cmd, case, "log." + SOLVER)
     wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = solver_cpu(case)
     info.append("wallClock       %.2f" % wall)
+    info.append("processCpu      %.2f" % (
+        after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime))
     open(os.path.join(case, "caseInfo"), "w").write("\n".join(info) + "\n")
     sh([PY, os.path.join(scripts, "collectSamples.py"), ".", "--prune"], case,
        "log.collectSamples")
