@@ -467,6 +467,21 @@ def median_range(values, digits=3):
                                              min(values), max(values))
 
 
+def speedup_rows(variants, ranks, paired):
+    """Table rows of the speed-up from the first rank count to the others:
+    paired(key, (variant, n1), (variant, n)) gives the paired ratios"""
+    n1 = ranks[0]
+    rows = []
+    for v in variants:
+        for n in ranks[1:]:
+            s = paired("step_cpu", (v, n1), (v, n))
+            rows.append("| %s | %d -> %d | %s | %s | %s |" % (
+                v, n1, n, median_range(s, 2),
+                median_range(paired("wall", (v, n1), (v, n)), 2),
+                "%.2f" % (statistics.median(s)*n1/n) if s else "-"))
+    return rows
+
+
 def tutorial_table(rows):
     """Medians per variant and rank count, the paired rough/smooth ratios
     and the speed-ups over the rank counts, per round"""
@@ -546,13 +561,7 @@ def tutorial_table(rows):
                  "time steps (rank 0): median of the rounds (range) | "
                  "speed-up, wall clock | parallel efficiency (CPU of the "
                  "steps) |" % n1, "|---|---|---|---|---|"]
-        for v in variants:
-            for n in ranks[1:]:
-                s = paired("step_cpu", (v, n1), (v, n))
-                text.append("| %s | %d -> %d | %s | %s | %s |" % (
-                    v, n1, n, median_range(s, 2),
-                    median_range(paired("wall", (v, n1), (v, n)), 2),
-                    "%.2f" % (statistics.median(s)*n1/n) if s else "-"))
+        text += speedup_rows(variants, ranks, paired)
     text += ["", "CPU of the time steps: rank 0's last ExecutionTime minus "
              "its first (start-up excluded; OpenMPI polls while it waits, so "
              "on several ranks this is about the elapsed time of the steps). "
@@ -802,13 +811,7 @@ def two_box_table(rows):
                  "(rank 0): median of the paired rounds (range) | speed-up, "
                  "wall clock | parallel efficiency (CPU of the steps) |",
                  "|---|---|---|---|---|"]
-        for v in VARIANTS:
-            for n in ranks[1:]:
-                s = paired("step_cpu", (v, n1), (v, n))
-                text.append("| %s | %d -> %d | %s | %s | %s |" % (
-                    v, n1, n, median_range(s, 2),
-                    median_range(paired("wall", (v, n1), (v, n)), 2),
-                    "%.2f" % (statistics.median(s)*n1/n) if s else "-"))
+        text += speedup_rows(VARIANTS, ranks, paired)
     text += ["", "CPU of the time steps: rank 0's last ExecutionTime minus "
              "its first (start-up and mesh reading excluded; OpenMPI polls "
              "while it waits, so on 2 ranks this is about the elapsed time "
