@@ -13,6 +13,23 @@ RESULTS = os.path.join(ROOT, "benchmarks", "results")
 FIGURES = os.path.join(ROOT, "docs", "figures")
 
 
+def write_csv(name, rows):
+    """rows (dicts with the same keys) to benchmarks/results/name (or to name
+    if it is an absolute path)"""
+    import csv
+    with open(os.path.join(RESULTS, name), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+
+
+def read_csv(name):
+    """The rows of benchmarks/results/name (or of name if absolute), as dicts"""
+    import csv
+    with open(os.path.join(RESULTS, name)) as f:
+        return list(csv.DictReader(f))
+
+
 def ensure_dirs():
     os.makedirs(RESULTS, exist_ok=True)
     os.makedirs(FIGURES, exist_ok=True)

@@ -10,8 +10,6 @@ instructions per hit under callgrind (hitLoop at two hit counts; needs
 valgrind) into benchmarks/results/hit-instructions.{csv,md}.
 """
 import argparse
-import csv
-import math
 import os
 import re
 import shutil
@@ -57,17 +55,12 @@ def measure(args):
             stddev_ns="%.2g" % r["stddev_ns"],
             facetCollisions="%.5g" % r.get("facetCollisions", float("nan")),
             fallbacks="%.3g" % r.get("fallbacks", float("nan"))))
-    with open(os.path.join(bc.RESULTS, "hit-cost.csv"), "w",
-              newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
+    bc.write_csv("hit-cost.csv", rows)
     return rows
 
 
 def load():
-    with open(os.path.join(bc.RESULTS, "hit-cost.csv")) as f:
-        return list(csv.DictReader(f))
+    return bc.read_csv("hit-cost.csv")
 
 
 def baseline(filename, key):
@@ -75,9 +68,8 @@ def baseline(filename, key):
     path = os.path.join(bc.RESULTS, BASELINE, filename)
     if not os.path.exists(path):
         return {}
-    with open(path) as f:
-        return {r[key]: r for r in csv.DictReader(f)
-                if r.get("model", "rough") == "rough"}
+    return {r[key]: r for r in bc.read_csv(path)
+            if r.get("model", "rough") == "rough"}
 
 
 def index(rows):
@@ -244,11 +236,7 @@ def instructions(args):
                          dim=case[3], alpha=case[4], Delta=case[5],
                          instructions_per_hit="%.1f" % per_hit))
         print("%s: %.1f instructions per hit" % (" ".join(argv), per_hit))
-    with open(os.path.join(bc.RESULTS, "hit-instructions.csv"), "w",
-              newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
+    bc.write_csv("hit-instructions.csv", rows)
     lines = ["| model | spin | lateral | dim | alpha | Delta | instructions "
              "per hit |", "|---|---|---|---|---|---|---|"]
     for r in rows:

@@ -58,7 +58,6 @@ speed-ups over the rank counts), then openfoam-tutorial-profile-<variant>.txt
 (perf, serial runs).
 """
 import argparse
-import csv
 import math
 import os
 import random
@@ -452,10 +451,7 @@ def tutorial_measure(args):
                 load=open("/proc/loadavg").read().split()[0])
             rows.append(row)
             print(row, flush=True)
-    with open(TUTORIAL_CSV, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
+    bc.write_csv(TUTORIAL_CSV, rows)
     return rows, tut
 
 
@@ -619,8 +615,7 @@ def tutorial_cost(args):
     and a rough wall model, same parcels and time steps, alternated, serial
     and on MPI ranks (--ranks); then perf profiles of the serial runs"""
     if args.plot_only:
-        with open(TUTORIAL_CSV) as f:
-            tutorial_table(list(csv.DictReader(f)))
+        tutorial_table(bc.read_csv(TUTORIAL_CSV))
         return
     rows, tut = tutorial_measure(args)
     tutorial_table(rows)
@@ -675,16 +670,11 @@ def measure(args):
                            check=checks.get(np, ""))
                 rows.append(row)
                 print(row, flush=True)
-    with open(os.path.join(bc.RESULTS, "openfoam-cost.csv"), "w",
-              newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
+    bc.write_csv("openfoam-cost.csv", rows)
 
 
 def load():
-    with open(os.path.join(bc.RESULTS, "openfoam-cost.csv")) as f:
-        rows = list(csv.DictReader(f))
+    rows = bc.read_csv("openfoam-cost.csv")
     for r in rows:                      # a CSV from before the two boxes
         r.setdefault("mesh", "box")
         r.setdefault("check", "")
@@ -806,7 +796,6 @@ def two_box_table(rows):
             median_range(paired("wall", ("rough", n), ("standard", n))),
             median_range(paired("wall", ("rebound", n), ("standard", n)))))
     if len(ranks) > 1:
-        n1 = ranks[0]
         text += ["", "| variant | ranks | speed-up, CPU of the time steps "
                  "(rank 0): median of the paired rounds (range) | speed-up, "
                  "wall clock | parallel efficiency (CPU of the steps) |",

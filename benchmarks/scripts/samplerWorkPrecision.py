@@ -13,7 +13,6 @@ the figures docs/figures/bench-sampler-ks.png, bench-sampler-bias.png and
 bench-sampler-cost.png.
 """
 import argparse
-import csv
 import math
 import os
 import subprocess
@@ -52,16 +51,11 @@ def measure(args):
                          ns_per_sample="%.4g" % r["cpu_ns"],
                          stddev_ns="%.2g" % r["stddev_ns"],
                          proposals="%.6g" % r.get("proposals", float("nan"))))
-    with open(os.path.join(bc.RESULTS, "sampler-cost.csv"), "w",
-              newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
+    bc.write_csv("sampler-cost.csv", rows)
 
 
 def load(name):
-    with open(os.path.join(bc.RESULTS, name)) as f:
-        return list(csv.DictReader(f))
+    return bc.read_csv(name)
 
 
 def hkey(h):

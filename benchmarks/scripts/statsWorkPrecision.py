@@ -106,18 +106,13 @@ def measure(args):
     rows.append(dict(method="montecarlo-recollide", parameter="10000",
                      seconds="%.5g" % seconds, seeds=1,
                      **{k: "nan" for k, _ in STATS}))
-    with open(os.path.join(bc.RESULTS, "stats-work-precision.csv"), "w",
-              newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
+    bc.write_csv("stats-work-precision.csv", rows)
     with open(os.path.join(bc.RESULTS, "stats-floor.txt"), "w") as f:
         f.write("%.6g\n" % floor)
 
 
 def load():
-    with open(os.path.join(bc.RESULTS, "stats-work-precision.csv")) as f:
-        rows = list(csv.DictReader(f))
+    rows = bc.read_csv("stats-work-precision.csv")
     floor = float(open(os.path.join(bc.RESULTS, "stats-floor.txt")).read())
     return rows, floor
 

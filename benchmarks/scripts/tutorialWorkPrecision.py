@@ -30,7 +30,6 @@ the defaults: about 20 min of solver CPU time, 20-40 min of wall clock on
 the 2-core machine of the report.
 """
 import argparse
-import csv
 import math
 import os
 import re
@@ -182,8 +181,8 @@ def run_case(tut, carrier_time, height, name, variant, diameter, parcels,
     out = os.path.join(case, "analysis")
     sh([PY, os.path.join(scripts, "postProcess.py"), out, case], tut,
        "run/%s.log.postProcess" % name)
-    summary = list(csv.DictReader(open(os.path.join(out, "summary.csv"))))[0]
-    profile = list(csv.DictReader(open(os.path.join(out, "profiles.csv"))))
+    summary = bc.read_csv(os.path.join(out, "summary.csv"))[0]
+    profile = bc.read_csv(os.path.join(out, "profiles.csv"))
     return wall, cpu, summary, profile
 
 
@@ -243,16 +242,11 @@ def measure(args):
         rows.append(row)
         print({k: v for k, v in row.items()
                if not k.startswith("concentration")}, flush=True)
-    with open(os.path.join(bc.RESULTS, "tutorial-work-precision.csv"), "w",
-              newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
+    bc.write_csv("tutorial-work-precision.csv", rows)
 
 
 def load():
-    with open(os.path.join(bc.RESULTS, "tutorial-work-precision.csv")) as f:
-        return list(csv.DictReader(f))
+    return bc.read_csv("tutorial-work-precision.csv")
 
 
 def vec(s):
