@@ -463,6 +463,18 @@ def median_range(values, digits=3):
                                              min(values), max(values))
 
 
+def paired_ratios(rows, rank_key, key, a, b):
+    """The ratio of key between runs a and b, each (variant, ranks), round by
+    round (rank_key: the CSV column of the rank count)"""
+    out = []
+    for rnd in sorted({int(r["round"]) for r in rows}):
+        t = {(r["variant"], int(r[rank_key])): float(r[key]) for r in rows
+             if int(r["round"]) == rnd}
+        if a in t and b in t and t[b] > 0:
+            out.append(t[a]/t[b])
+    return out
+
+
 def speedup_rows(variants, ranks, paired):
     """Table rows of the speed-up from the first rank count to the others:
     paired(key, (variant, n1), (variant, n)) gives the paired ratios"""
@@ -493,14 +505,7 @@ def tutorial_table(rows):
                 and int(r["ranks"]) == n and r.get(key, "") not in ("", None)]
 
     def paired(key, a, b):
-        """a/b per round, a and b (variant, ranks)"""
-        out = []
-        for rnd in rounds:
-            t = {(r["variant"], int(r["ranks"])): float(r[key]) for r in rows
-                 if int(r["round"]) == rnd}
-            if a in t and b in t and t[b] > 0:
-                out.append(t[a]/t[b])
-        return out
+        return paired_ratios(rows, "ranks", key, a, b)
 
     def med(variant, n, key):
         v = of(variant, n, key)
@@ -733,14 +738,7 @@ def two_box_table(rows):
                 and int(r["np"]) == n]
 
     def paired(key, a, b):
-        """a/b per round, a and b (variant, ranks)"""
-        out = []
-        for rnd in rounds:
-            t = {(r["variant"], int(r["np"])): float(r[key]) for r in rows
-                 if int(r["round"]) == rnd}
-            if a in t and b in t and t[b] > 0:
-                out.append(t[a]/t[b])
-        return out
+        return paired_ratios(rows, "np", key, a, b)
 
     r0 = rows[0]
     parcels = int(r0["parcels"])
