@@ -17,8 +17,8 @@ Control on the 3-D mesh with the same settings: v_z (and omega_x) are
 non-zero for most parcels and the statistics agree with the reference WITH
 lateral tilt.
 
-Usage: test2D.py --solver NAME --spin 0|1 --reference BIN [--parcels N]
-           [--work DIR]
+Usage: test2D.py --platform openfoam13|openfoam1912 --cloud colliding|kinematic
+           --reference BIN [--parcels N] [--parcels3D N] [--work DIR]
 
 SPDX-License-Identifier: GPL-3.0-or-later
 """
@@ -28,7 +28,7 @@ import os
 
 import numpy as np
 
-import ofTestTools as t
+import foamTestCase as t
 
 END_TIME = "0.05"
 
@@ -38,27 +38,27 @@ SETTINGS = t.DEFAULT_SETTINGS.replace(
 
 def parse_args():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("--solver", required=True)
-    p.add_argument("--spin", type=int, required=True)
+    t.add_platform_args(p)
     p.add_argument("--reference", required=True)
     p.add_argument("--parcels", type=int, default=30000)
     p.add_argument("--parcels3D", type=int, default=10000)
-    p.add_argument("--work", default=".")
     return p.parse_args()
 
 
 def run_case(args, two_d, parcels):
     name = "case2D" if two_d else "case3D"
-    case = os.path.abspath(os.path.join(args.work, name))
-    t.make_case(case, two_d=two_d, parcels=parcels, settings=SETTINGS)
-    t.run(case, ["blockMesh"], "log.blockMesh")
-    t.run(case, [args.solver], "log." + args.solver)
-    fields = ["U", "d"] + (["angularMomentum"] if args.spin else [])
-    return case, t.read_cloud(case, END_TIME, fields)
+    case = t.wall_impact_case(t.Platform(args.platform),
+                              os.path.join(args.work, name), args.cloud,
+                              two_d=two_d, parcels=parcels, settings=SETTINGS)
+    case.mesh()
+    case.solve()
+    fields = ["U", "d"] + (["angularMomentum"] if t.SPIN[args.cloud] else [])
+    return case, case.read_cloud(END_TIME, fields)
 
 
 def reference_function(args, lateral_tilt):
-    rows = t.reference(args.reference, args.spin, 8, sorted(t.ANGLES),
+    rows = t.reference(args.reference, t.SPIN[args.cloud], 8,
+                       sorted(t.ANGLES),
                        lateral_tilt=lateral_tilt)
     return lambda angle, d: (rows[angle], 8)
 
@@ -68,21 +68,19 @@ def test():
     n_total = 3 * args.parcels
 
     case, parcels = run_case(args, True, args.parcels)
-    with open(os.path.join(case, "log." + args.solver)) as f:
-        log = f.read()
-    t.check("2-D case: no lateral facet tilt" in log,
+    t.check("2-D case: no lateral facet tilt" in case.log(),
             "the model reports the 2-D treatment in the log")
 
     U = parcels["U"]
     t.check(len(U) == n_total, "2-D: all %d parcels kept" % n_total)
     t.check(bool(np.all(U[:, 1] > 0)), "2-D: every parcel leaves the wall")
-    _, rows = t.read_statistics(case)
-    t.check(rows[-1]["lowerWall_hits"] == n_total,
+    _, rows = case.read_statistics()
+    t.check(t.column(rows[-1], "lowerWall_hits") == n_total,
             "2-D: every parcel hit the wall once")
     t.check(bool(np.all(U[:, 2] == 0)),
             "2-D: v_z == 0 exactly for every parcel (max |v_z| = %g)"
             % np.abs(U[:, 2]).max())
-    if args.spin:
+    if t.SPIN[args.cloud]:
         L = parcels["angularMomentum"]
         t.check(bool(np.all(L[:, 0] == 0) and np.all(L[:, 1] == 0)),
                 "2-D: omega_x == omega_y == 0 exactly for every parcel "
@@ -101,7 +99,7 @@ def test():
     t.check(np.count_nonzero(U3[:, 2]) > 0.9 * len(U3),
             "3-D control with lateralTilt: v_z != 0 for %d of %d parcels"
             % (np.count_nonzero(U3[:, 2]), len(U3)))
-    if args.spin:
+    if t.SPIN[args.cloud]:
         L3 = parcels3["angularMomentum"]
         t.check(np.count_nonzero(L3[:, 0]) > 0.9 * len(L3),
                 "3-D control with lateralTilt: omega_x != 0 for %d of %d"

@@ -4,14 +4,17 @@ keyword and the allowed range.
 
 Runs the solver on a small 2-D wall-impact case once per bad entry of
 roughWallInteractionCoeffs and checks that it fails (non-zero exit code, no
-crash) with "FOAM FATAL IO ERROR", the dictionary name
-(kinematicCloudProperties...roughWallInteractionCoeffs), the keyword and the
-allowed values in the log.  Controls: the unmodified settings run and
-write the statistics file, writeToFile false writes none; without
-the libs entry the run fails with OpenFOAM's "Unknown patchInteractionModel
-type roughWallInteraction" (the troubleshooting symptom of the docs).
+crash) with "FOAM FATAL IO ERROR", the dictionary name (the cloud
+properties file: kinematicCloudProperties on v1912, cloudProperties on
+OpenFOAM-13, and the scope roughWallInteractionCoeffs.patches.<entry>), the
+keyword and the allowed values in the log.  Controls: the unmodified settings
+run and write the statistics file, writeToFile false writes none; without the
+libs entry the run fails with OpenFOAM's "Unknown patchInteractionModel type
+roughWallInteraction" (v1912) or "Unknown patch interaction model type
+roughWallInteraction" (OpenFOAM-13), the troubleshooting symptom of the docs.
 
-Usage: testBadInput.py --solver NAME [--work DIR]
+Usage: testBadInput.py --platform openfoam13|openfoam1912 [--cloud KIND]
+           [--work DIR]
 
 SPDX-License-Identifier: GPL-3.0-or-later
 """
@@ -20,7 +23,7 @@ import argparse
 import os
 import shutil
 
-import ofTestTools as t
+import foamTestCase as t
 
 ROUGH = {
     "type": "rough",
@@ -122,7 +125,8 @@ CASES = [
     ("none on a wall", settings({"type": "none", "e": None, "mu0": None,
                                  "muD": None, "roughnessAngle": None}),
      ["keyword 'patches'", "roughWallInteractionCoeffs",
-      "type none for wall patch lowerWall", "none only on other patches"]),
+      "type none for wall patch(es) lowerWall upperWall",
+      "none only on other patches"]),
     ("patch not covered", settings(outlet=""),
      ["keyword 'patches'", "roughWallInteractionCoeffs",
       "no entry for patch(es) outlet", "not coupled, empty or wedge"]),
@@ -141,47 +145,41 @@ CRASH_SIGNS = ["sigSegv", "sigFpe", "Segmentation fault", "core dumped",
 
 def parse_args():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("--solver", required=True)
-    p.add_argument("--work", default=".")
+    t.add_platform_args(p)
     return p.parse_args()
-
-
-def read(path):
-    with open(path) as f:
-        return f.read()
 
 
 def test():
     args = parse_args()
-    case = os.path.abspath(os.path.join(args.work, "case"))
-    t.make_case(case, two_d=True, parcels=10)
-    t.set_control(case, endTime="0.001")
-    t.run(case, ["blockMesh"], "log.blockMesh")
+    platform = t.Platform(args.platform)
+    case = t.wall_impact_case(platform, os.path.join(args.work, "case"),
+                              args.cloud, two_d=True, parcels=10)
+    case.set_control(endTime="0.001")
+    case.mesh()
 
     # Control: the unmodified settings run
-    t.write_settings(case, settings())
-    rc = t.run(case, [args.solver], "log.good", check_rc=False)
+    case.write_settings(settings())
+    rc, _ = case.solve("log.good", check_rc=False)
     t.check(rc == 0, "control: the valid settings run (rc %d)" % rc)
 
     # Control: writeToFile false writes no statistics file
-    stats_dir = os.path.join(case, "postProcessing")
+    stats_dir = case.file("postProcessing")
     t.check(os.path.isdir(stats_dir), "control: statistics file written")
     shutil.rmtree(stats_dir)
-    t.write_settings(case, settings().replace(
+    case.write_settings(settings().replace(
         "roughWallInteractionCoeffs\n{\n",
         "roughWallInteractionCoeffs\n{\n    writeToFile false;\n"))
-    rc = t.run(case, [args.solver], "log.noFile", check_rc=False)
+    rc, _ = case.solve("log.noFile", check_rc=False)
     t.check(rc == 0 and not os.path.exists(stats_dir),
             "control: writeToFile false runs and writes no statistics file")
 
     for i, (name, text, expected) in enumerate(CASES):
-        t.write_settings(case, text)
+        case.write_settings(text)
         log = "log.bad%02d" % i
-        rc = t.run(case, [args.solver], log, check_rc=False)
-        out = read(os.path.join(case, log))
-        missing = [e for e in ["FOAM FATAL IO ERROR",
-                               "kinematicCloudProperties"] + expected
-                   if e not in out]
+        rc, _ = case.solve(log, check_rc=False)
+        out = case.log(log)
+        missing = [e for e in ["FOAM FATAL IO ERROR", platform.properties]
+                   + expected if e not in out]
         crashed = [s for s in CRASH_SIGNS if s in out]
         t.check(rc != 0 and not missing and not crashed,
                 "%s: rc %d, %s%s" % (
@@ -191,15 +189,15 @@ def test():
                     ", CRASH %s" % crashed if crashed else ""))
 
     # Control: without libs the model is unknown (troubleshooting symptom)
-    t.make_case(case, two_d=True, parcels=10, with_libs=False)
-    t.set_control(case, endTime="0.001")
-    t.run(case, ["blockMesh"], "log.blockMesh")
-    rc = t.run(case, [args.solver], "log.noLibs", check_rc=False)
-    out = read(os.path.join(case, "log.noLibs"))
-    t.check(rc != 0 and "Unknown patchInteractionModel type roughWallInteraction"
-            in out,
-            "without libs: 'Unknown patchInteractionModel type "
-            "roughWallInteraction' (rc %d)" % rc)
+    case = t.wall_impact_case(platform, os.path.join(args.work, "case"),
+                              args.cloud, two_d=True, parcels=10,
+                              with_libs=False)
+    case.set_control(endTime="0.001")
+    case.mesh()
+    rc, _ = case.solve("log.noLibs", check_rc=False)
+    message = platform.unknown_model_message()
+    t.check(rc != 0 and message in case.log("log.noLibs"),
+            "without libs: '%s' (rc %d)" % (message, rc))
 
 
 if __name__ == "__main__":

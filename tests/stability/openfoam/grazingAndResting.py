@@ -19,7 +19,9 @@ e and mu) for the reference cost. Checks:
   - CPU time of the rough run at most 3 times that of the smooth run plus
     0.5 s (the rough-wall hit itself is a few microseconds).
 
-Usage: grazingAndResting.py --work DIR [--end-time T] [--delta-t DT]
+Usage: grazingAndResting.py --platform openfoam13|openfoam1912 --work DIR
+                            [--end-time T] [--delta-t DT]
+                            [--parcels-per-group N]
 
 SPDX-License-Identifier: GPL-3.0-or-later
 """
@@ -27,16 +29,20 @@ SPDX-License-Identifier: GPL-3.0-or-later
 import argparse
 import math
 import os
+import sys
 
 import numpy as np
 
-import foamCase as fc
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "openfoam"))
+import foamTestCase as t  # noqa: E402
 
-BOX = (np.zeros(3), np.full(3, 0.1))
+BOX = t.BOX
+
 
 def parse_args():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("--work", default=".")
+    t.add_platform_args(p, kinds=False)
     p.add_argument("--end-time", type=float, default=0.3)
     p.add_argument("--delta-t", type=float, default=1e-3)
     p.add_argument("--parcels-per-group", type=int, default=1000)
@@ -44,7 +50,6 @@ def parse_args():
 
 
 def setup(path, args, smooth):
-    case = fc.make_case(path)
     n = args.parcels_per_group
     a = math.radians(0.1)
     groups = [
@@ -56,14 +61,14 @@ def setup(path, args, smooth):
         {"name": "resting", "n": n, "d": 500e-6, "U0": (0.0, 0.0, 0.0),
          "box": ((0.01, 1e-5, 0.01), (0.09, 5e-5, 0.09))},
     ]
-    parcels, mass = fc.write_injectors(case, groups)
+    case, parcels, mass = t.closed_box_case(t.Platform(args.platform), path,
+                                            groups)
     if smooth:
-        fc.use_smooth_walls(case)
-    for key, value in (("endTime", args.end_time),
-                       ("writeInterval", args.end_time),
-                       ("deltaT", args.delta_t)):
-        fc.set_entry(case, "system/controlDict", key, "%g" % value)
-    fc.run(case, ["blockMesh"], "log.blockMesh")
+        case.write_settings(t.SMOOTH_SETTINGS)
+    case.set_control(endTime="%g" % args.end_time,
+                     writeInterval="%g" % args.end_time,
+                     deltaT="%g" % args.delta_t)
+    case.mesh()
     return case, parcels, mass
 
 
@@ -73,44 +78,44 @@ def test():
     steps_total = int(round(args.end_time/args.delta_t))
 
     smooth, parcels, mass = setup(os.path.join(work, "smooth"), args, True)
-    fc.run(smooth, ["icoUncoupledKinematicParcelFoam"], "log.solver")
-    smooth_cpu = fc.read_log(smooth, "log.solver")[-1]["executionTime"]
+    smooth.solve()
+    smooth_cpu = smooth.read_steps()[-1]["executionTime"]
 
     rough, parcels, mass = setup(os.path.join(work, "rough"), args, False)
-    fc.run(rough, ["icoUncoupledKinematicParcelFoam"], "log.solver")
-    steps = fc.read_log(rough, "log.solver")
+    rough.solve()
+    steps = rough.read_steps()
     label = "grazing/sliding/resting, dt = %g s" % args.delta_t
-    fc.check(len(steps) == steps_total, "%s: %d of %d time steps done"
-             % (label, len(steps), steps_total))
-    fc.check_conservation(steps, parcels, mass, label)
+    t.check(len(steps) == steps_total, "%s: %d of %d time steps done"
+            % (label, len(steps), steps_total))
+    t.check_conservation(steps, parcels, mass, label)
 
     hits = steps[-1]["hits"]
     per_step = np.diff([0] + [s["hits"] for s in steps])
-    fc.check(hits <= 1.5*parcels*steps_total and per_step.max() <= 4*parcels,
-             "%s: %d hits, %.2f per parcel per step on average, at most %d "
-             "in a step (<= 1.5 per parcel per step, <= 4 in a step)"
-             % (label, hits, hits/(parcels*steps_total), per_step.max()))
+    t.check(hits <= 1.5*parcels*steps_total and per_step.max() <= 4*parcels,
+            "%s: %d hits, %.2f per parcel per step on average, at most %d "
+            "in a step (<= 1.5 per parcel per step, <= 4 in a step)"
+            % (label, hits, hits/(parcels*steps_total), per_step.max()))
     resting = args.parcels_per_group
-    fc.check(hits >= 0.25*resting*steps_total,
-             "%s: the floor is hit (%d hits >= a quarter of the resting "
-             "parcels at every step)" % (label, hits))
+    t.check(hits >= 0.25*resting*steps_total,
+            "%s: the floor is hit (%d hits >= a quarter of the resting "
+            "parcels at every step)" % (label, hits))
     facet = max(steps[-1]["facetPerHit"])
-    fc.check(facet <= 2, "%s: %.3f facet collisions per hit (<= 2)"
-             % (label, facet))
+    t.check(facet <= 2, "%s: %.3f facet collisions per hit (<= 2)"
+            % (label, facet))
     fallbacks = steps[-1]["fallbacks"]
-    fc.check(fallbacks <= 0.01*hits, "%s: %d hits at the re-collision bound "
-             "(<= 1 %% of the hits)" % (label, fallbacks))
+    t.check(fallbacks <= 0.01*hits, "%s: %d hits at the re-collision bound "
+            "(<= 1 %% of the hits)" % (label, fallbacks))
     rough_cpu = steps[-1]["executionTime"]
-    fc.check(rough_cpu <= 3*smooth_cpu + 0.5,
-             "%s: CPU time %.2f s rough, %.2f s smooth (rough <= 3 x smooth "
-             "+ 0.5 s)" % (label, rough_cpu, smooth_cpu))
+    t.check(rough_cpu <= 3*smooth_cpu + 0.5,
+            "%s: CPU time %.2f s rough, %.2f s smooth (rough <= 3 x smooth "
+            "+ 0.5 s)" % (label, rough_cpu, smooth_cpu))
 
-    parts = fc.final_cloud(rough, "%g" % args.end_time)
-    xyz, U = fc.check_inside_box(parts, parcels, *BOX, label=label)
-    fc.check(float(np.abs(U).max()) <= 1.5,
-             "%s: largest velocity component %.3f m/s (<= 1.5: no energy "
-             "from the walls)" % (label, float(np.abs(U).max())))
+    parts = rough.cloud_parts("%g" % args.end_time)
+    xyz, U = t.check_inside_box(parts, parcels, *BOX, label=label)
+    t.check(float(np.abs(U).max()) <= 1.5,
+            "%s: largest velocity component %.3f m/s (<= 1.5: no energy "
+            "from the walls)" % (label, float(np.abs(U).max())))
 
 
 if __name__ == "__main__":
-    fc.main(test)
+    t.main(test)

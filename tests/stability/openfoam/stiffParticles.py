@@ -2,8 +2,9 @@
 """Stiff and very inert particles in the same gas flow, with rough walls.
 
 In the closed box of closedBox.py (all sides rough, gravity -y) the gas
-moves at (3, -2, 1) m/s everywhere (icoUncoupledKinematicParcelFoam reads the
-gas velocity, it does not solve for it), so it pushes parcels into three of
+moves at (3, -2, 1) m/s everywhere (the carrier is frozen: v1912's
+icoUncoupledKinematicParcelFoam and OpenFOAM-13's functions solver read the
+gas velocity, they do not solve for it), so it pushes parcels into three of
 the walls. Two kinds of glass parcels share it:
   tiny   1 um: response time rho d^2/(18 mu) = 7.7e-6 s, 130 times shorter
          than the time step 1e-3 s (stiff drag): they follow the gas into
@@ -22,49 +23,39 @@ corner hits its three walls in every sub-step: about 10 hits per step, with
 smooth walls too); hits at the re-collision bound below 1 %; CPU time at
 most 3 times that of the smooth-wall run plus 0.5 s.
 
-Usage: stiffParticles.py --work DIR [--integration Euler|analytical]
+Usage: stiffParticles.py --platform openfoam13|openfoam1912 --work DIR
+                         [--integration Euler|analytical] [--end-time T]
+                         [--parcels-per-group N]
 
 SPDX-License-Identifier: GPL-3.0-or-later
 """
 
 import argparse
 import os
-import re
+import sys
 
 import numpy as np
 
-import foamCase as fc
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "openfoam"))
+import foamTestCase as t  # noqa: E402
 
-BOX = (np.zeros(3), np.full(3, 0.1))
+BOX = t.BOX
 GAS = (3.0, -2.0, 1.0)
 LAUNCH = (-2.0, 3.0, -2.0)   # |LAUNCH| = 4.1 m/s
 
 
 def parse_args():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("--work", default=".")
+    t.add_platform_args(p, kinds=False)
     p.add_argument("--integration", default="Euler")
     p.add_argument("--end-time", type=float, default=0.3)
     p.add_argument("--parcels-per-group", type=int, default=1000)
     return p.parse_args()
 
 
-def set_integration(case, scheme):
-    """The integration scheme of the parcel velocity."""
-    path = os.path.join(case, "constant", "kinematicCloudProperties")
-    with open(path) as f:
-        text = f.read()
-    text, n = re.subn(r"(integrationSchemes\s*\{\s*U\s+)\w+;",
-                      r"\g<1>%s;" % scheme, text)
-    if n != 1:
-        raise RuntimeError("no integrationSchemes U entry in " + path)
-    with open(path, "w") as f:
-        f.write(text)
-
-
 def setup(path, args, smooth):
-    """The case at path; returns it, its parcel count and mass."""
-    case = fc.make_case(path)
+    """The case at path, run; returns it, its parcel count and mass."""
     inner = ((0.005, 0.005, 0.005), (0.095, 0.095, 0.095))
     groups = [
         {"name": "tiny", "n": args.parcels_per_group, "d": 1e-6,
@@ -72,15 +63,16 @@ def setup(path, args, smooth):
         {"name": "huge", "n": args.parcels_per_group, "d": 5e-3,
          "U0": LAUNCH, "box": inner},
     ]
-    parcels, mass = fc.write_injectors(case, groups)
-    fc.set_entry(case, "0/U", "internalField", "uniform (%g %g %g)" % GAS)
-    set_integration(case, args.integration)
-    for key in ("endTime", "writeInterval"):
-        fc.set_entry(case, "system/controlDict", key, "%g" % args.end_time)
+    case, parcels, mass = t.closed_box_case(t.Platform(args.platform), path,
+                                            groups)
+    case.set_entry("0/U", "internalField", "uniform (%g %g %g)" % GAS)
+    case.set_integration(args.integration)
+    case.set_control(endTime="%g" % args.end_time,
+                     writeInterval="%g" % args.end_time)
     if smooth:
-        fc.use_smooth_walls(case)
-    fc.run(case, ["blockMesh"], "log.blockMesh")
-    fc.run(case, ["icoUncoupledKinematicParcelFoam"], "log.solver")
+        case.write_settings(t.SMOOTH_SETTINGS)
+    case.mesh()
+    case.solve()
     return case, parcels, mass
 
 
@@ -89,43 +81,44 @@ def test():
     label = "stiff and inert particles, %s integration" % args.integration
     work = os.path.abspath(args.work)
     smooth, _, _ = setup(os.path.join(work, "smooth"), args, True)
-    smooth_cpu = fc.read_log(smooth, "log.solver")[-1]["executionTime"]
+    smooth_cpu = smooth.read_steps()[-1]["executionTime"]
     case, parcels, mass = setup(os.path.join(work, "rough"), args, False)
 
-    steps = fc.read_log(case, "log.solver")
-    fc.check_conservation(steps, parcels, mass, label)
+    steps = case.read_steps()
+    t.check_conservation(steps, parcels, mass, label)
     hits = steps[-1]["hits"]
     per_step = np.diff([0] + [s["hits"] for s in steps])
-    fc.check(per_step.max() <= 20*parcels and hits > 0,
-             "%s: %d hits, at most %d in a step (<= 20 per parcel)"
-             % (label, hits, per_step.max()))
+    t.check(per_step.max() <= 20*parcels and hits > 0,
+            "%s: %d hits, at most %d in a step (<= 20 per parcel)"
+            % (label, hits, per_step.max()))
     rough_cpu = steps[-1]["executionTime"]
-    fc.check(rough_cpu <= 3*smooth_cpu + 0.5,
-             "%s: CPU time %.2f s rough, %.2f s smooth (rough <= 3 x smooth "
-             "+ 0.5 s)" % (label, rough_cpu, smooth_cpu))
+    t.check(rough_cpu <= 3*smooth_cpu + 0.5,
+            "%s: CPU time %.2f s rough, %.2f s smooth (rough <= 3 x smooth "
+            "+ 0.5 s)" % (label, rough_cpu, smooth_cpu))
     fallbacks = steps[-1]["fallbacks"]
-    fc.check(fallbacks <= 0.01*hits, "%s: %d hits at the re-collision bound "
-             "(<= 1 %% of the hits)" % (label, fallbacks))
+    t.check(fallbacks <= 0.01*hits, "%s: %d hits at the re-collision bound "
+            "(<= 1 %% of the hits)" % (label, fallbacks))
 
-    parts = fc.final_cloud(case, "%g" % args.end_time)
-    xyz, U = fc.check_inside_box(parts, parcels, *BOX, label=label)
+    parts = case.cloud_parts("%g" % args.end_time)
+    xyz, U = t.check_inside_box(parts, parcels, *BOX, label=label)
     d = np.concatenate([p["d"] for p in parts])
     limit = max(np.linalg.norm(GAS), np.linalg.norm(LAUNCH)) \
         + 9.81*args.end_time
     for name, group in (("tiny", d < 1e-5), ("huge", d > 1e-3)):
         speed = np.linalg.norm(U[group], axis=1)
-        fc.check(group.sum() == args.parcels_per_group
-                 and float(speed.max()) <= limit,
-                 "%s: %d %s parcels, fastest %.3f m/s (<= %.3f m/s)"
-                 % (label, group.sum(), name, float(speed.max()), limit))
+        t.check(group.sum() == args.parcels_per_group
+                and float(speed.max()) <= limit,
+                "%s: %d %s parcels, fastest %.3f m/s (<= %.3f m/s)"
+                % (label, group.sum(), name, float(speed.max()), limit))
     # The stiff parcels followed the gas into the corner it drives them to
     # (x = 0.1, y = 0, z = 0.1 m) and stay there, pressed into three walls
     corner = xyz[d < 1e-5]
     cornered = (corner[:, 0] > 0.099) & (corner[:, 1] < 0.001) \
         & (corner[:, 2] > 0.099)
-    fc.check(bool(np.all(cornered)),
-             "%s: %d of %d tiny parcels in the corner the gas drives them to"
-             % (label, np.count_nonzero(cornered), len(corner)))
+    t.check(bool(np.all(cornered)),
+            "%s: %d of %d tiny parcels in the corner the gas drives them to"
+            % (label, np.count_nonzero(cornered), len(corner)))
+
 
 if __name__ == "__main__":
-    fc.main(test)
+    t.main(test)
