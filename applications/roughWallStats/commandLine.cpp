@@ -2,6 +2,7 @@
 // Copyright (C) 2026 roughWallInteraction authors. SPDX-License-Identifier: GPL-3.0-or-later
 
 #include "commandLine.hpp"
+#include "roughWallLimits.hpp"
 
 #include <cerrno>
 #include <cmath>
@@ -14,15 +15,28 @@
 namespace roughWallStats
 {
 
+//- A limit as the usage text shows it (integers without a decimal point)
+std::string limitText(const double x)
+{
+    std::ostringstream os;
+    os << x;
+    return os.str();
+}
+
 std::string usage()
 {
+    const std::string maxDelta = limitText(roughWall::limits::maxRoughnessAngleDeg);
+    const std::string minCollisions = limitText(roughWall::limits::minMaxFacetCollisions);
+    const std::string maxCollisions = limitText(roughWall::limits::maxMaxFacetCollisions);
+    const std::string defaultCollisions =
+        limitText(roughWall::limits::defaultMaxFacetCollisions);
     return R"(Usage: roughWallStats [options]
 
 Restitution-coefficient statistics of Derevich's rough-wall collision model
 (the paper's figures 2 and 3). Angles in degrees. CSV on stdout or --output.
 
 Model (defaults: glass beads on steel, the paper's d_p = 110 um case):
-  --Delta D        sd of the facet tilt [deg], 0 <= D <= 45        (8)
+  --Delta D        sd of the facet tilt [deg], 0 <= D <= )" + maxDelta + R"(        (8)
   --e E            normal restitution of a facet, 0 <= E <= 1      (0.8)
   --mu0 M          static friction, M >= 0                         (0.4)
   --mud M          dynamic friction, 0 <= M <= mu0                 (0.4)
@@ -35,7 +49,8 @@ What is computed:
                    montecarlo (exact sampler, standard errors se_*) (quadrature)
   --recollide      the full operator: new facets until the particle leaves,
                    as the OpenFOAM model does (Monte Carlo only)
-  --max-collisions N  bound on facet collisions with --recollide, >= 1 (10)
+  --max-collisions N  bound on facet collisions with --recollide,
+                   )" + minCollisions + " <= N <= " + maxCollisions + R"( ()" + defaultCollisions + R"()
   --lateral        isotropic 3-D roughness: extra sideways facet tilt
                    (Monte Carlo only)
   --samples N      Monte Carlo samples per angle, >= 2              (1e6)
@@ -243,13 +258,14 @@ Options parseCommandLine(int argc, const char* const argv[])
     if (has("--Delta"))
     {
         o.DeltaDeg = number("--Delta", given["--Delta"]);
-        if (!(o.DeltaDeg >= 0 && o.DeltaDeg <= 45))
+        if (!(o.DeltaDeg >= 0 && o.DeltaDeg <= roughWall::limits::maxRoughnessAngleDeg))
         {
-            fail("--Delta must be in [0, 45] degrees (the roughness sd; beyond 45 too many "
-                 "facets are overhangs), got " + given["--Delta"]);
+            fail("--Delta must be in [0, " + limitText(roughWall::limits::maxRoughnessAngleDeg)
+               + "] degrees (the roughness sd; beyond that too many facets are overhangs), got "
+               + given["--Delta"]);
         }
     }
-    o.model.Delta = o.DeltaDeg*roughWall::pi/180;
+    o.model.Delta = roughWall::limits::degToRad(o.DeltaDeg);
 
     FacetMaterial& m = o.model.material;
     if (has("--e"))
@@ -323,7 +339,9 @@ Options parseCommandLine(int argc, const char* const argv[])
     if (has("--max-collisions"))
     {
         o.monteCarlo.maxFacetCollisions =
-            static_cast<int>(integer("--max-collisions", given["--max-collisions"], 1, 1000));
+            static_cast<int>(integer("--max-collisions", given["--max-collisions"],
+                                     roughWall::limits::minMaxFacetCollisions,
+                                     roughWall::limits::maxMaxFacetCollisions));
         if (!o.monteCarlo.recollide)
         {
             fail("--max-collisions needs --recollide");

@@ -15,6 +15,7 @@
 
 #include "model.hpp"
 #include "statistics.hpp"
+#include "roughWallLimits.hpp"
 
 #include <cstdint>
 #include <random>
@@ -28,7 +29,7 @@ struct MonteCarloSettings
     std::uint64_t seed = 1;
     bool recollide = false;
     bool lateral = false;
-    int maxFacetCollisions = 10;   //!< as the operator's default
+    int maxFacetCollisions = roughWall::limits::defaultMaxFacetCollisions;
 };
 
 //- Uniform numbers in [0, 1) from a 64-bit Mersenne twister, with 53 random

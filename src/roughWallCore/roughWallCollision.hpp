@@ -30,6 +30,7 @@
 #include "facetAngleSampler.hpp"
 #include "facetCollision.hpp"
 #include "fastMath.hpp"
+#include "roughWallLimits.hpp"
 #include "standardNormal.hpp"
 
 #include <algorithm>
@@ -45,7 +46,7 @@ struct RoughWallParameters
     FacetMaterial material;
     double roughnessAngle = 0;     //!< Delta [rad], in [0, pi/4]
     bool lateralTilt = false;      //!< isotropic 3-D roughness (never in 2-D)
-    int maxFacetCollisions = 10;   //!< bound on facet collisions per wall hit
+    int maxFacetCollisions = limits::defaultMaxFacetCollisions;  //!< bound per wall hit
 };
 
 //- What one wall hit did, for statistics

@@ -29,12 +29,11 @@ License
 
 #include "RoughWallInteraction.H"
 #include "roughWallInput.H"
+#include "foamCompat.H"
 #include "cloudUniform01.H"
-#include "emptyPolyPatch.H"
-#include "wedgePolyPatch.H"
-#include "wallPolyPatch.H"
 
 #include <cmath>
+#include <type_traits>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -62,279 +61,12 @@ inline vector toFoam(const roughWall::Vec3& v)
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
-Foam::List<Foam::roughWallPatchData>
-Foam::RoughWallInteraction<CloudType>::readPatchData(const dictionary& dict)
-{
-    const char* const allowed =
-        "a list ( name { type ...; ... } \"regex\" { ... } ... ) "
-        "with at least one entry";
-    const char* const meaning =
-        "patch names or regular expressions and their interaction settings";
-
-    const entry* eptr = dict.findEntry("patches", keyType::LITERAL);
-
-    if (!eptr || eptr->isDict())
-    {
-        roughWallInput::fatalBadEntry
-        (
-            dict, "patches", allowed, meaning,
-            eptr ? "a dictionary" : "missing"
-        );
-    }
-
-    ITstream& is = eptr->stream();
-    is.rewind();
-
-    auto fatalList = [&](const string& found)
-    {
-        roughWallInput::fatalBadEntry(dict, "patches", allowed, meaning, found);
-    };
-
-    token t(is);
-    if (!(t.isPunctuation() && t.pToken() == token::BEGIN_LIST))
-    {
-        fatalList("'" + roughWallInput::entryText(dict, "patches") + "'");
-    }
-
-    DynamicList<roughWallPatchData> patchData;
-
-    while (true)
-    {
-        token keyToken(is);
-
-        if (keyToken.isPunctuation() && keyToken.pToken() == token::END_LIST)
-        {
-            break;
-        }
-        if (!keyToken.isWord() && !keyToken.isString())
-        {
-            fatalList
-            (
-                "'" + roughWallInput::entryText(dict, "patches")
-              + "' (expected a patch name or a quoted regular expression)"
-            );
-        }
-
-        const keyType patchName
-        (
-            keyToken.isWord()
-          ? keyType(keyToken.wordToken())
-          : keyType(keyToken.stringToken())
-        );
-
-        token blockToken(is);
-        if
-        (
-            !blockToken.isPunctuation()
-         || blockToken.pToken() != token::BEGIN_BLOCK
-        )
-        {
-            fatalList
-            (
-                "'" + roughWallInput::entryText(dict, "patches")
-              + "' (expected '{' after " + patchName + ")"
-            );
-        }
-        is.putBack(blockToken);
-
-        // Named after the entry, so that messages point at it
-        dictionary patchDict
-        (
-            fileName("patches." + patchName),
-            dict,
-            is
-        );
-
-        patchData.append(roughWallPatchData(patchName, patchDict));
-    }
-
-    if (patchData.empty())
-    {
-        fatalList("an empty list");
-    }
-
-    return List<roughWallPatchData>(std::move(patchData));
-}
-
-
-template<class CloudType>
-void Foam::RoughWallInteraction<CloudType>::mapPatches()
-{
-    const polyBoundaryMesh& bMesh = mesh_.boundaryMesh();
-
-    patchEntry_ = -1;
-
-    // The first entry that matches a patch applies
-    forAllReverse(patchData_, entryi)
-    {
-        const labelList ids(bMesh.indices(patchData_[entryi].patchName()));
-
-        if (ids.empty())
-        {
-            IOWarningInFunction(this->coeffDict())
-                << "No patch matches the patches entry "
-                << patchData_[entryi].patchName() << endl;
-        }
-
-        for (const label patchi : ids)
-        {
-            patchEntry_[patchi] = entryi;
-        }
-    }
-
-    // Particles never reach coupled patches (OpenFOAM transfers them),
-    // empty patches or wedges (tracked in the mid-plane)
-    DynamicList<word> uncovered;
-
-    forAll(bMesh, patchi)
-    {
-        const polyPatch& pp = bMesh[patchi];
-
-        if
-        (
-            pp.coupled()
-         || isA<emptyPolyPatch>(pp)
-         || isA<wedgePolyPatch>(pp)
-        )
-        {
-            patchEntry_[patchi] = -1;
-        }
-        else if (patchEntry_[patchi] < 0)
-        {
-            uncovered.append(pp.name());
-        }
-    }
-
-    // type none hands the hit back to OpenFOAM, whose hitWallPatch does
-    // nothing: the parcel would stay on the wall face for ever (v1912's
-    // standardWallInteraction hangs the same way)
-    forAll(bMesh, patchi)
-    {
-        const label entryi = patchEntry_[patchi];
-        if
-        (
-            entryi >= 0
-         && patchData_[entryi].type() == interactionType::none
-         && isA<wallPolyPatch>(bMesh[patchi])
-        )
-        {
-            roughWallInput::fatalBadEntry
-            (
-                this->coeffDict(), "patches",
-                "rough, rebound, stick or escape on wall patches; none only "
-                "on other patches (OpenFOAM's own handling: escape through "
-                "a patch, reflection on a symmetry plane)",
-                "patch names or regular expressions and their interaction "
-                "settings",
-                "type none for wall patch " + bMesh[patchi].name()
-              + " (OpenFOAM would leave its parcels stuck on the wall)"
-            );
-        }
-    }
-
-    if (uncovered.size())
-    {
-        string names;
-        for (const word& name : uncovered)
-        {
-            names += (names.empty() ? "" : " ") + name;
-        }
-
-        roughWallInput::fatalBadEntry
-        (
-            this->coeffDict(), "patches",
-            "an entry (name or regular expression) for every patch that is "
-            "not coupled, empty or wedge",
-            "patch names or regular expressions and their interaction "
-            "settings",
-            "no entry for patch(es) " + names
-        );
-    }
-
-    // Report the settings
-    Info<< "    Patch interactions:" << nl;
-    DynamicList<word> keptOnNonWalls;
-
-    forAll(bMesh, patchi)
-    {
-        const label entryi = patchEntry_[patchi];
-        if (entryi < 0)
-        {
-            continue;
-        }
-
-        const roughWallPatchData& data = patchData_[entryi];
-        const polyPatch& pp = bMesh[patchi];
-
-        Info<< "        " << pp.name() << ": ";
-        data.writeSummary(Info);
-        Info<< nl;
-
-        const bool keepsParcels =
-            data.type() == interactionType::rough
-         || data.type() == interactionType::rebound
-         || data.type() == interactionType::stick;
-
-        if
-        (
-            keepsParcels
-         && !isA<wallPolyPatch>(pp)
-         && !polyPatch::constraintType(pp.type())
-        )
-        {
-            keptOnNonWalls.append(pp.name());
-        }
-    }
-
-    // KinematicParcel::hitPatch counts hits on such patches as escapes
-    // before the patch interaction model is called
-    if (keptOnNonWalls.size())
-    {
-        WarningInFunction
-            << "Patches " << keptOnNonWalls << " are not of type wall but "
-            << "keep the parcels that hit them (rough, rebound or stick):"
-            << nl << "    OpenFOAM counts every hit on them as an escape in"
-            << " the 'Parcel fate: system' line." << endl;
-    }
-}
-
-
-template<class CloudType>
-Foam::label Foam::RoughWallInteraction<CloudType>::findEmptyComponent() const
-{
-    if (mesh_.nSolutionD() == 3)
-    {
-        return -1;
-    }
-
-    const Vector<label>& solutionD = mesh_.solutionD();
-
-    if (mesh_.nSolutionD() == 2)
-    {
-        for (direction cmpt = 0; cmpt < vector::nComponents; ++cmpt)
-        {
-            if (solutionD[cmpt] == -1)
-            {
-                return cmpt;
-            }
-        }
-    }
-
-    FatalErrorInFunction
-        << "roughWallInteraction needs a 2-D or 3-D mesh; this mesh solves "
-        << mesh_.nSolutionD() << " direction(s) (solutionD = " << solutionD
-        << ")." << exit(FatalError);
-
-    return -1;
-}
-
-
-template<class CloudType>
 void Foam::RoughWallInteraction<CloudType>::constrainToPlane(vector& v) const
 {
-    if (twoD())
+    const label cmpt = patches_.emptyComponent();
+    if (cmpt >= 0)
     {
-        v[emptyComponent_] = 0;
+        v[cmpt] = 0;
     }
 }
 
@@ -346,11 +78,12 @@ void Foam::RoughWallInteraction<CloudType>::constrainSpinToPlane
 ) const
 {
     // Only spin about the empty direction keeps the motion in the plane
-    if (twoD())
+    const label cmpt = patches_.emptyComponent();
+    if (cmpt >= 0)
     {
-        const scalar omegaEmpty = omega[emptyComponent_];
+        const scalar omegaEmpty = omega[cmpt];
         omega = Zero;
-        omega[emptyComponent_] = omegaEmpty;
+        omega[cmpt] = omegaEmpty;
     }
 }
 
@@ -407,7 +140,9 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
     vector n = -nw;
     vector U0 = p.U() - Up;
 
-    if (twoD())
+    const bool twoD = patches_.emptyComponent() >= 0;
+
+    if (twoD)
     {
         constrainToPlane(n);
         n /= mag(n);
@@ -440,12 +175,13 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
     const roughWall::Vec3 omega0(omega);
 
     vector emptyDirection(Zero);
-    if (twoD())
+    if (twoD)
     {
-        emptyDirection[emptyComponent_] = 1;
+        emptyDirection[patches_.emptyComponent()] = 1;
     }
 
-    cloudUniform01 uniform01(this->owner().rndGen());
+    auto& rndGen = this->owner().rndGen();
+    cloudUniform01<std::remove_reference_t<decltype(rndGen)>> uniform01(rndGen);
 
     const roughWall::RoughWallReport report =
         roughWall::collideWithRoughWall<withSpin>
@@ -504,50 +240,27 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
 }
 
 
-// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
-
 template<class CloudType>
-void Foam::RoughWallInteraction<CloudType>::writeFileHeader(Ostream& os)
+void Foam::RoughWallInteraction<CloudType>::checkCoeffsKeywords() const
 {
-    PatchInteractionModel<CloudType>::writeFileHeader(os);
+    // Settings put at the wrong level (e.g. e or lateralTilt outside the
+    // patches entries) would be ignored silently
+    const wordList used{"patches", "writeToFile", "writePrecision", "U"};
 
-    const wordList roughColumns(roughWallStatistics::roughColumnNames());
-
-    // Processor patches come last and have no statistics
-    for (label patchi = 0; patchi < stats_.nPatches(); ++patchi)
+    for (const entry& e : this->coeffDict())
     {
-        const label entryi = patchEntry_[patchi];
-        if (entryi < 0)
+        bool found = false;
+        for (const word& w : used)
         {
-            continue;
+            found = found || e.keyword() == w;
         }
-
-        const word& patchName = mesh_.boundaryMesh()[patchi].name();
-
-        switch (patchData_[entryi].type())
+        if (!found)
         {
-            case interactionType::escape:
-            {
-                this->writeTabbed(os, patchName + "_nEscape");
-                this->writeTabbed(os, patchName + "_massEscape");
-                break;
-            }
-            case interactionType::stick:
-            {
-                this->writeTabbed(os, patchName + "_nStick");
-                this->writeTabbed(os, patchName + "_massStick");
-                break;
-            }
-            case interactionType::rough:
-            {
-                for (const word& column : roughColumns)
-                {
-                    this->writeTabbed(os, patchName + "_" + column);
-                }
-                break;
-            }
-            default:
-            {}
+            IOWarningInFunction(this->coeffDict())
+                << "Keyword '" << e.keyword().c_str() << "' is not used here;"
+                << " used keywords: " << used
+                << ". Settings of a patch go inside its entry of patches."
+                << endl;
         }
     }
 }
@@ -563,67 +276,46 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
 )
 :
     PatchInteractionModel<CloudType>(dict, cloud, typeName),
-    mesh_(cloud.mesh()),
-    patchData_(readPatchData(this->coeffDict())),
-    patchEntry_(mesh_.boundaryMesh().size(), -1),
-    emptyComponent_(-1),
-    stats_(mesh_.boundaryMesh().nNonProcessor())
+    patches_(this->coeffDict(), cloud.mesh()),
+    stats_(patches_.nNonProcessor()),
+    file_()
 {
-    mapPatches();
-
-    bool anyRough = false;
-    for (const roughWallPatchData& data : patchData_)
+    if (patches_.anyRough())
     {
-        anyRough = anyRough || data.type() == interactionType::rough;
-    }
-
-    if (anyRough)
-    {
-        emptyComponent_ = findEmptyComponent();
-
         Info<< "    Rough-wall parcels carry spin: "
             << (withSpin ? "yes (angularMomentum)" : "no") << nl;
-
-        if (twoD())
-        {
-            Info<< "    2-D case: no lateral facet tilt, no velocity or spin "
-                << "out of the plane normal to "
-                << vector::componentNames[emptyComponent_] << nl;
-        }
     }
 
-    // Catch settings put at the wrong level (e.g. e or lateralTilt outside
-    // the patches entries): they would be ignored silently
-    const wordList coeffsKeywords
+    checkCoeffsKeywords();
+
+    // v1912's base class would write a file of its own when the
+    // coefficients say writeToFile: the statistics file replaces it
+    if constexpr (roughWallCompat::esi)
     {
-        "patches", "writeToFile", "writePrecision", "useUserTime", "U"
-    };
-    for (const entry& e : this->coeffDict())
-    {
-        if (!coeffsKeywords.found(e.keyword()))
-        {
-            IOWarningInFunction(this->coeffDict())
-                << "Keyword '" << e.keyword().c_str() << "' is not used here;"
-                << " used keywords: " << coeffsKeywords
-                << ". Settings of a patch go inside its entry of patches."
-                << endl;
-        }
+        this->writeToFile_ = false;
     }
 
-    // The statistics go to postProcessing/ unless writeToFile is false
-    // (the base class does not write by default)
-    this->writeToFile_ =
-        Pstream::master()
-     && roughWallInput::readSwitchOrDefault
+    const bool writeToFile = roughWallInput::readSwitchOrDefault
+    (
+        this->coeffDict(), "writeToFile",
+        "write the statistics under postProcessing/ (default: true)",
+        true
+    );
+
+    const label precision = roughWallInput::readLabelOrDefault
+    (
+        this->coeffDict(), "writePrecision",
+        {1, 17, "significant digits of the statistics file (default: "
+            "controlDict's writePrecision)"},
+        IOstream::defaultPrecision()
+    );
+
+    if (writeToFile)
+    {
+        file_ = roughWallStatistics::openFile
         (
-            this->coeffDict(), "writeToFile",
-            "write the statistics under postProcessing/ (default: true)",
-            true
+            cloud.mesh(), cloud.name(), patches_, precision
         );
-
-    if (this->writeToFile_ && !this->filePtr_.valid())
-    {
-        this->filePtr_ = this->createFile(this->fileName_);
     }
 }
 
@@ -635,11 +327,9 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
 )
 :
     PatchInteractionModel<CloudType>(pim),
-    mesh_(pim.mesh_),
-    patchData_(pim.patchData_),
-    patchEntry_(pim.patchEntry_),
-    emptyComponent_(pim.emptyComponent_),
-    stats_(pim.stats_)
+    patches_(pim.patches_),
+    stats_(pim.stats_),
+    file_()
 {}
 
 
@@ -653,20 +343,15 @@ bool Foam::RoughWallInteraction<CloudType>::correct
     bool& keepParticle
 )
 {
-    const label patchi = pp.index();
-    const label entryi =
-        patchi < patchEntry_.size() ? patchEntry_[patchi] : -1;
+    const roughWallPatchData* data = patches_.find(pp.index());
 
     // Coupled, empty and wedge patches: OpenFOAM's own handling
-    if (entryi < 0)
+    if (!data)
     {
         return false;
     }
 
-    const roughWallPatchData& data = patchData_[entryi];
-    vector& U = p.U();
-
-    switch (data.type())
+    switch (data->type())
     {
         case interactionType::none:
         {
@@ -675,31 +360,31 @@ bool Foam::RoughWallInteraction<CloudType>::correct
         case interactionType::escape:
         {
             keepParticle = false;
-            p.active(false);
-            U = Zero;
-            stats_.addEscape(patchi, p.nParticle()*p.mass());
+            roughWallCompat::setMoving(p, false);
+            p.U() = Zero;
+            stats_.addEscape(pp.index(), p.nParticle()*p.mass());
             return true;
         }
         case interactionType::stick:
         {
             keepParticle = true;
-            p.active(false);
-            U = Zero;
-            stats_.addStick(patchi, p.nParticle()*p.mass());
+            roughWallCompat::setMoving(p, false);
+            p.U() = Zero;
+            stats_.addStick(pp.index(), p.nParticle()*p.mass());
             return true;
         }
         case interactionType::rebound:
         {
             keepParticle = true;
-            p.active(true);
-            rebound(p, pp, data);
+            roughWallCompat::setMoving(p, true);
+            rebound(p, pp, *data);
             return true;
         }
         case interactionType::rough:
         {
             keepParticle = true;
-            p.active(true);
-            roughRebound(p, pp, data);
+            roughWallCompat::setMoving(p, true);
+            roughRebound(p, pp, *data);
             return true;
         }
     }
@@ -711,7 +396,7 @@ bool Foam::RoughWallInteraction<CloudType>::correct
 template<class CloudType>
 void Foam::RoughWallInteraction<CloudType>::info(Ostream& os)
 {
-    // System escapes; writes the file header and the time column
+    // v1912: the system escapes
     PatchInteractionModel<CloudType>::info(os);
 
     // This run's counters of all processors plus the totals stored at the
@@ -741,57 +426,13 @@ void Foam::RoughWallInteraction<CloudType>::info(Ostream& os)
         }
     }
 
-    for (label patchi = 0; patchi < total.nPatches(); ++patchi)
-    {
-        const label entryi = patchEntry_[patchi];
-        if (entryi < 0)
-        {
-            continue;
-        }
-
-        const word& patchName = mesh_.boundaryMesh()[patchi].name();
-        typedef roughWallStatistics stat;
-
-        switch (patchData_[entryi].type())
-        {
-            case interactionType::escape:
-            {
-                os  << "    Parcel fate: patch " << patchName
-                    << " (number, mass)" << nl
-                    << "      - escape                      = "
-                    << total.count(patchi, stat::ESCAPED) << ", "
-                    << total.sum(patchi, stat::ESCAPED_MASS) << nl;
-
-                this->file()
-                    << tab << total.count(patchi, stat::ESCAPED)
-                    << tab << total.sum(patchi, stat::ESCAPED_MASS);
-                break;
-            }
-            case interactionType::stick:
-            {
-                os  << "    Parcel fate: patch " << patchName
-                    << " (number, mass)" << nl
-                    << "      - stick                       = "
-                    << total.count(patchi, stat::STUCK) << ", "
-                    << total.sum(patchi, stat::STUCK_MASS) << nl;
-
-                this->file()
-                    << tab << total.count(patchi, stat::STUCK)
-                    << tab << total.sum(patchi, stat::STUCK_MASS);
-                break;
-            }
-            case interactionType::rough:
-            {
-                total.writeRoughLog(os, patchi, patchName);
-                total.writeRoughColumns(this->file(), patchi);
-                break;
-            }
-            default:
-            {}
-        }
-    }
-
-    this->file() << endl;
+    total.write
+    (
+        os,
+        file_.valid() ? &file_() : nullptr,
+        patches_,
+        this->owner().mesh().time()
+    );
 
     if (this->writeTime())
     {

@@ -30,6 +30,7 @@ License
 #include "roughWallInput.H"
 #include "Switch.H"
 #include "OStringStream.H"
+#include "foamCompat.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -59,7 +60,7 @@ Foam::scalar numberToken
 {
     using namespace Foam;
 
-    const entry* eptr = dict.findEntry(keyword, keyType::LITERAL);
+    const entry* eptr = roughWallCompat::findLiteral(dict, keyword);
 
     if (!eptr)
     {
@@ -130,7 +131,7 @@ Foam::string Foam::roughWallInput::entryText
     const word& keyword
 )
 {
-    const entry* eptr = dict.findEntry(keyword, keyType::LITERAL);
+    const entry* eptr = roughWallCompat::findLiteral(dict, keyword);
 
     if (!eptr)
     {
@@ -195,7 +196,7 @@ Foam::scalar Foam::roughWallInput::readScalarOrDefault
     const scalar deflt
 )
 {
-    if (!dict.found(keyword, keyType::LITERAL))
+    if (!roughWallCompat::findLiteral(dict, keyword))
     {
         return deflt;
     }
@@ -211,7 +212,7 @@ Foam::label Foam::roughWallInput::readLabelOrDefault
     const label deflt
 )
 {
-    if (!dict.found(keyword, keyType::LITERAL))
+    if (!roughWallCompat::findLiteral(dict, keyword))
     {
         return deflt;
     }
@@ -219,7 +220,7 @@ Foam::label Foam::roughWallInput::readLabelOrDefault
     const string allowed =
         "an integer in [" + boundText(r.min) + ", " + boundText(r.max) + "]";
 
-    const entry& e = dict.lookupEntry(keyword, keyType::LITERAL);
+    const entry& e = *roughWallCompat::findLiteral(dict, keyword);
 
     if (e.isDict() || e.stream().size() != 1 || !e.stream()[0].isLabel())
     {
@@ -252,14 +253,14 @@ bool Foam::roughWallInput::readSwitchOrDefault
     const bool deflt
 )
 {
-    if (!dict.found(keyword, keyType::LITERAL))
+    if (!roughWallCompat::findLiteral(dict, keyword))
     {
         return deflt;
     }
 
     const char* allowed = "true/false, on/off, yes/no";
 
-    const entry& e = dict.lookupEntry(keyword, keyType::LITERAL);
+    const entry& e = *roughWallCompat::findLiteral(dict, keyword);
 
     if (e.isDict() || e.stream().size() != 1 || !e.stream()[0].isWord())
     {

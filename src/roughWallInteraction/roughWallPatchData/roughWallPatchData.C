@@ -29,22 +29,38 @@ License
 
 #include "roughWallPatchData.H"
 #include "roughWallInput.H"
-#include "wordRes.H"
+#include "foamCompat.H"
+#include "roughWallLimits.hpp"
 
 // * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * * //
 
-const Foam::Enum<Foam::roughWallPatchData::interactionType>
-Foam::roughWallPatchData::interactionTypeNames
-({
-    { interactionType::rough, "rough" },
-    { interactionType::rebound, "rebound" },
-    { interactionType::stick, "stick" },
-    { interactionType::escape, "escape" },
-    { interactionType::none, "none" },
-});
+const char* const Foam::roughWallPatchData::interactionTypeNames
+[
+    Foam::roughWallPatchData::nInteractionTypes
+] =
+{
+    "none", "rebound", "stick", "escape", "rough"
+};
 
 
-const Foam::label Foam::roughWallPatchData::defaultMaxFacetCollisions = 10;
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+bool contains(const Foam::wordList& words, const Foam::word& w)
+{
+    for (const Foam::word& x : words)
+    {
+        if (x == w)
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+} // End anonymous namespace
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -87,15 +103,20 @@ void Foam::roughWallPatchData::readRough(const dictionary& dict)
         false
     );
 
+    static const std::string maxFacetMeaning =
+        "bound on facet collisions per wall hit before a smooth mean-wall "
+        "rebound is applied (default: "
+      + std::to_string(roughWall::limits::defaultMaxFacetCollisions) + ")";
+
     rough_.maxFacetCollisions = readLabelOrDefault
     (
         dict, "maxFacetCollisions",
         {
-            1, 1000,
-            "bound on facet collisions per wall hit before a smooth mean-wall "
-            "rebound is applied (default: 10)"
+            roughWall::limits::minMaxFacetCollisions,
+            roughWall::limits::maxMaxFacetCollisions,
+            maxFacetMeaning.c_str()
         },
-        defaultMaxFacetCollisions
+        roughWall::limits::defaultMaxFacetCollisions
     );
 }
 
@@ -152,11 +173,11 @@ void Foam::roughWallPatchData::checkUnusedKeywords
 
     for (const entry& e : dict)
     {
-        if (!used.found(e.keyword()))
+        if (!contains(used, e.keyword()))
         {
             IOWarningInFunction(dict)
                 << "Keyword '" << e.keyword().c_str() << "' is not used by "
-                << "type " << interactionTypeNames[type_]
+                << "type " << name(type_)
                 << " (patches entry " << patchName_ << "); used keywords: "
                 << used << endl;
         }
@@ -190,21 +211,34 @@ Foam::roughWallPatchData::roughWallPatchData
     rough_(),
     roughnessAngle_()
 {
-    const entry* typePtr = dict.findEntry("type", keyType::LITERAL);
+    const entry* typePtr = roughWallCompat::findLiteral(dict, "type");
 
-    const bool knownType =
+    label typei = -1;
+    if
+    (
         typePtr
      && !typePtr->isDict()
      && typePtr->stream().size() == 1
      && typePtr->stream()[0].isWord()
-     && interactionTypeNames.found(typePtr->stream()[0].wordToken());
+    )
+    {
+        const word& typeWord = typePtr->stream()[0].wordToken();
+        for (label i = 0; i < nInteractionTypes; ++i)
+        {
+            if (typeWord == interactionTypeNames[i])
+            {
+                typei = i;
+            }
+        }
+    }
+    const bool knownType = typei >= 0;
 
     if (!knownType)
     {
         roughWallInput::fatalBadEntry
         (
             dict, "type",
-            "one of " + string(Foam::name(interactionTypeNames.size()))
+            "one of " + Foam::name(nInteractionTypes)
           + " words: rough rebound stick escape none",
             "what happens to a parcel that hits the patch",
             typePtr
@@ -213,7 +247,7 @@ Foam::roughWallPatchData::roughWallPatchData
         );
     }
 
-    type_ = interactionTypeNames[typePtr->stream()[0].wordToken()];
+    type_ = static_cast<interactionType>(typei);
 
     switch (type_)
     {
@@ -239,7 +273,7 @@ Foam::roughWallPatchData::roughWallPatchData
 
 void Foam::roughWallPatchData::writeSummary(Ostream& os) const
 {
-    os  << interactionTypeNames[type_];
+    os  << name(type_);
 
     switch (type_)
     {

@@ -30,7 +30,9 @@ License
 #include "roughWallStatistics.H"
 #include "Pstream.H"
 #include "PstreamCombineReduceOps.H"
-#include "unitConversion.H"
+#include "Time.H"
+#include "OSspecific.H"
+#include "roughWallLimits.hpp"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -62,7 +64,7 @@ void Foam::roughWallStatistics::addHit
     c[SLIDING] += report.sliding;
     c[FALLBACKS] += report.fallback ? 1 : 0;
 
-    s[GAMMA] += radToDeg(report.firstGamma);
+    s[GAMMA] += roughWall::limits::radToDeg(report.firstGamma);
     s[KN] += kn;
     s[ENERGY_LOSS] += energyLoss;
 
@@ -161,56 +163,198 @@ Foam::scalar Foam::roughWallStatistics::meanKt(const label patchi) const
 }
 
 
-Foam::wordList Foam::roughWallStatistics::roughColumnNames()
-{
-    return wordList
-    {
-        "hits", "noSlip", "sliding", "facetPerHit", "fallbacks",
-        "meanGamma", "meanKn", "meanKt", "energyLoss"
-    };
-}
-
-
-void Foam::roughWallStatistics::writeRoughColumns
+std::vector<Foam::roughWallStatistics::reportLine>
+Foam::roughWallStatistics::report
 (
-    Ostream& os,
-    const label patchi
-) const
-{
-    os  << tab << count(patchi, HITS)
-        << tab << count(patchi, NO_SLIP)
-        << tab << count(patchi, SLIDING)
-        << tab << facetCollisionsPerHit(patchi)
-        << tab << count(patchi, FALLBACKS)
-        << tab << meanGammaDeg(patchi)
-        << tab << meanKn(patchi)
-        << tab << meanKt(patchi)
-        << tab << sum(patchi, ENERGY_LOSS);
-}
-
-
-void Foam::roughWallStatistics::writeRoughLog
-(
-    Ostream& os,
     const label patchi,
-    const word& patchName
+    const roughWallPatchData::interactionType t,
+    std::string& heading
 ) const
 {
-    os  << "    Rough wall: patch " << patchName << nl
-        << "      - hits                        = "
-        << count(patchi, HITS) << nl
-        << "      - facet collisions (no-slip, sliding) = "
-        << count(patchi, NO_SLIP) << ", " << count(patchi, SLIDING) << nl
-        << "      - facet collisions per hit    = "
-        << facetCollisionsPerHit(patchi) << nl
-        << "      - hits at the re-collision bound = "
-        << count(patchi, FALLBACKS) << nl
-        << "      - mean facet tilt gamma [deg] = "
-        << meanGammaDeg(patchi) << nl
-        << "      - mean k_n, k_t               = "
-        << meanKn(patchi) << ", " << meanKt(patchi) << nl
-        << "      - kinetic energy loss [J]     = "
-        << sum(patchi, ENERGY_LOSS) << nl;
+    typedef roughWallPatchData::interactionType interactionType;
+
+    auto n = [&](const countType c){ return scalar(count(patchi, c)); };
+
+    switch (t)
+    {
+        case interactionType::escape:
+        {
+            heading = "Parcel fate: patch %s (number, mass)";
+            return
+            {
+                {
+                    "escape", {"nEscape", "massEscape"},
+                    {n(ESCAPED), sum(patchi, ESCAPED_MASS)}, 1
+                }
+            };
+        }
+        case interactionType::stick:
+        {
+            heading = "Parcel fate: patch %s (number, mass)";
+            return
+            {
+                {
+                    "stick", {"nStick", "massStick"},
+                    {n(STUCK), sum(patchi, STUCK_MASS)}, 1
+                }
+            };
+        }
+        case interactionType::rough:
+        {
+            heading = "Rough wall: patch %s";
+            return
+            {
+                {"hits", {"hits"}, {n(HITS)}, 1},
+                {
+                    "facet collisions (no-slip, sliding)",
+                    {"noSlip", "sliding"}, {n(NO_SLIP), n(SLIDING)}, 2
+                },
+                {
+                    "facet collisions per hit", {"facetPerHit"},
+                    {facetCollisionsPerHit(patchi)}, 0
+                },
+                {
+                    "hits at the re-collision bound", {"fallbacks"},
+                    {n(FALLBACKS)}, 1
+                },
+                {
+                    "mean facet tilt gamma [deg]", {"meanGamma"},
+                    {meanGammaDeg(patchi)}, 0
+                },
+                {
+                    "mean k_n, k_t", {"meanKn", "meanKt"},
+                    {meanKn(patchi), meanKt(patchi)}, 0
+                },
+                {
+                    "kinetic energy loss [J]", {"energyLoss"},
+                    {sum(patchi, ENERGY_LOSS)}, 0
+                }
+            };
+        }
+        default:
+        {
+            return {};
+        }
+    }
+}
+
+
+Foam::autoPtr<Foam::OFstream> Foam::roughWallStatistics::openFile
+(
+    const polyMesh& mesh,
+    const word& cloudName,
+    const roughWallPatchList& patches,
+    const label precision
+)
+{
+    if (!Pstream::master())
+    {
+        return autoPtr<OFstream>();
+    }
+
+    const Time& time = mesh.time();
+
+    // Where v1912's writeFile puts a sub-model's file: the undecomposed
+    // case, the start time of this run
+    fileName dir(time.rootPath()/time.globalCaseName()/"postProcessing");
+    if (mesh.name() != polyMesh::defaultRegion)
+    {
+        dir = dir/mesh.name();
+    }
+    dir = dir/"lagrangian"/cloudName/"patchInteractionModel"
+        /Time::timeName(time.startTime().value());
+
+    mkDir(dir);
+    autoPtr<OFstream> filePtr(new OFstream(dir/"roughWallInteraction.dat"));
+    OFstream& os = filePtr();
+    os.precision(precision);
+
+    os  << "# Particle patch interaction" << nl
+        << "# Model : roughWallInteraction" << nl
+        << "# Time";
+
+    const roughWallStatistics none(patches.nNonProcessor());
+    for (label patchi = 0; patchi < none.nPatches(); ++patchi)
+    {
+        std::string heading;
+        for (const reportLine& line : none.report(patchi, patches.type(patchi), heading))
+        {
+            for (const std::string& column : line.columns)
+            {
+                os  << tab << patches.name(patchi) << '_' << column.c_str();
+            }
+        }
+    }
+    os  << endl;
+
+    return filePtr;
+}
+
+
+void Foam::roughWallStatistics::write
+(
+    Ostream& log,
+    OFstream* file,
+    const roughWallPatchList& patches,
+    const Time& time
+) const
+{
+    if (file)
+    {
+        *file << Time::timeName(time.value());
+    }
+
+    for (label patchi = 0; patchi < nPatches_; ++patchi)
+    {
+        std::string heading;
+        const std::vector<reportLine> lines
+        (
+            report(patchi, patches.type(patchi), heading)
+        );
+
+        if (lines.empty())
+        {
+            continue;
+        }
+
+        const std::string::size_type at = heading.find("%s");
+        log << "    " << heading.substr(0, at).c_str()
+            << patches.name(patchi) << heading.substr(at + 2).c_str() << nl;
+
+        for (const reportLine& line : lines)
+        {
+            // Labels aligned as in OpenFOAM's own "Parcel fate" lines
+            const std::string::size_type width = 28;
+            log << "      - " << line.label.c_str()
+                << std::string
+                   (
+                       line.label.size() < width
+                     ? width - line.label.size() : 1,
+                       ' '
+                   ).c_str()
+                << "= ";
+
+            for (std::size_t i = 0; i < line.values.size(); ++i)
+            {
+                const scalar v = line.values[i];
+                log << (i ? ", " : "");
+                const bool isCount = i < line.nCounts;
+                if (isCount) log << label(v); else log << v;
+
+                if (file)
+                {
+                    *file << tab;
+                    if (isCount) *file << label(v); else *file << v;
+                }
+            }
+            log << nl;
+        }
+    }
+
+    if (file)
+    {
+        *file << endl;
+    }
 }
 
 

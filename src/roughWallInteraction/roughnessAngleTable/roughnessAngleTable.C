@@ -29,12 +29,14 @@ License
 
 #include "roughnessAngleTable.H"
 #include "roughWallInput.H"
-#include "unitConversion.H"
+#include "foamCompat.H"
+#include "roughWallLimits.hpp"
 #include "OStringStream.H"
 
 // * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * * //
 
-const Foam::scalar Foam::roughnessAngleTable::maxAngleDeg = 45;
+const Foam::scalar Foam::roughnessAngleTable::maxAngleDeg =
+    roughWall::limits::maxRoughnessAngleDeg;
 
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -81,7 +83,7 @@ Foam::roughnessAngleTable::roughnessAngleTable
       + "] or a table ((d1 Delta1) (d2 Delta2) ...) with Delta in [0, "
       + Foam::name(maxAngleDeg) + "] and d >= 0 strictly increasing";
 
-    const entry* eptr = dict.findEntry(keyword, keyType::LITERAL);
+    const entry* eptr = roughWallCompat::findLiteral(dict, keyword);
 
     if (!eptr)
     {
@@ -103,7 +105,7 @@ Foam::roughnessAngleTable::roughnessAngleTable
         {
             fatalBadEntry(dict, keyword, allowed, meaning, found);
         }
-        angles_.setSize(1, degToRad(angle));
+        angles_.setSize(1, roughWall::limits::degToRad(angle));
         return;
     }
 
@@ -158,7 +160,7 @@ Foam::roughnessAngleTable::roughnessAngleTable
         }
 
         diameters_[rowi] = d;
-        angles_[rowi] = degToRad(angle);
+        angles_[rowi] = roughWall::limits::degToRad(angle);
     }
 
     // A one-row table is a constant
@@ -215,13 +217,13 @@ Foam::string Foam::roughnessAngleTable::description() const
     OStringStream os;
     if (constant())
     {
-        os  << radToDeg(angles_[0]) << " deg";
+        os  << roughWall::limits::radToDeg(angles_[0]) << " deg";
     }
     else
     {
         os  << "table of " << diameters_.size() << " rows, "
-            << radToDeg(angles_[0]) << " deg at d = " << diameters_[0]
-            << " m to " << radToDeg(angles_.last()) << " deg at d = "
+            << roughWall::limits::radToDeg(angles_[0]) << " deg at d = " << diameters_[0]
+            << " m to " << roughWall::limits::radToDeg(angles_.last()) << " deg at d = "
             << diameters_.last() << " m";
     }
     return os.str();

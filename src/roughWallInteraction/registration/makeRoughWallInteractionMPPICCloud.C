@@ -26,21 +26,22 @@ License
     SPDX-License-Identifier: GPL-3.0-or-later
 
 Description
-    Registers roughWallInteraction for basicKinematicCloud
-    (uncoupledKinematicParcelFoam).
+    Registers roughWallInteraction for the MPPIC cloud: cloudProperties type
+    MPPICCloud (Foundation), basicKinematicMPPICCloud (v1912: MPPICFoam).
 
-    One cloud per file: makePatchInteractionModelType defines a file-scope
-    typedef.  The run-time selection table itself lives in OpenFOAM's
-    lagrangianIntermediate library (makePatchInteractionModel is not called).
+    One cloud type per file: makePatchInteractionModelType defines a
+    file-scope typedef.  The run-time selection table itself lives in
+    OpenFOAM's parcel library (makePatchInteractionModel is not called).
 
 \*---------------------------------------------------------------------------*/
 
-#include "basicKinematicCloud.H"
+#include "foamCompat.H"
+#include ROUGHWALL_CLOUD_HEADER(ROUGHWALL_MPPIC_CLOUD)
 #include "RoughWallInteraction.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
-makePatchInteractionModelType(RoughWallInteraction, basicKinematicCloud);
+makeRoughWallInteraction(ROUGHWALL_MPPIC_CLOUD)
 
 
 // ************************************************************************* //

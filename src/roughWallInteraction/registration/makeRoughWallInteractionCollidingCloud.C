@@ -26,25 +26,24 @@ License
     SPDX-License-Identifier: GPL-3.0-or-later
 
 Description
-    Registers roughWallInteraction for basicKinematicCollidingCloud
-    (icoUncoupledKinematicParcelFoam and DPMFoam).
+    Registers roughWallInteraction for the colliding cloud, whose parcels carry spin:
+    cloudProperties type collidingCloud (Foundation),
+    basicKinematicCollidingCloud (v1912: icoUncoupledKinematicParcelFoam,
+    DPMFoam).
 
-    One cloud per file: makePatchInteractionModelType defines a file-scope
-    typedef.  The run-time selection table itself lives in OpenFOAM's
-    lagrangianIntermediate library (makePatchInteractionModel is not called).
+    One cloud type per file: makePatchInteractionModelType defines a
+    file-scope typedef.  The run-time selection table itself lives in
+    OpenFOAM's parcel library (makePatchInteractionModel is not called).
 
 \*---------------------------------------------------------------------------*/
 
-#include "basicKinematicCollidingCloud.H"
+#include "foamCompat.H"
+#include ROUGHWALL_CLOUD_HEADER(ROUGHWALL_COLLIDING_CLOUD)
 #include "RoughWallInteraction.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
-makePatchInteractionModelType
-(
-    RoughWallInteraction,
-    basicKinematicCollidingCloud
-);
+makeRoughWallInteraction(ROUGHWALL_COLLIDING_CLOUD)
 
 
 // ************************************************************************* //

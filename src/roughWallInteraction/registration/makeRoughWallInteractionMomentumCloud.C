@@ -26,21 +26,23 @@ License
     SPDX-License-Identifier: GPL-3.0-or-later
 
 Description
-    Registers roughWallInteraction for basicKinematicMPPICCloud
-    (MPPICFoam).
+    Registers roughWallInteraction for the momentum cloud without spin:
+    cloudProperties type cloud (Foundation), basicKinematicCloud
+    (v1912: uncoupledKinematicParcelFoam).
 
-    One cloud per file: makePatchInteractionModelType defines a file-scope
-    typedef.  The run-time selection table itself lives in OpenFOAM's
-    lagrangianIntermediate library (makePatchInteractionModel is not called).
+    One cloud type per file: makePatchInteractionModelType defines a
+    file-scope typedef.  The run-time selection table itself lives in
+    OpenFOAM's parcel library (makePatchInteractionModel is not called).
 
 \*---------------------------------------------------------------------------*/
 
-#include "basicKinematicMPPICCloud.H"
+#include "foamCompat.H"
+#include ROUGHWALL_CLOUD_HEADER(ROUGHWALL_MOMENTUM_CLOUD)
 #include "RoughWallInteraction.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
-makePatchInteractionModelType(RoughWallInteraction, basicKinematicMPPICCloud);
+makeRoughWallInteraction(ROUGHWALL_MOMENTUM_CLOUD)
 
 
 // ************************************************************************* //

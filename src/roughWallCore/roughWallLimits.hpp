@@ -1,0 +1,36 @@
+// roughWallCore: framework-free physics of Derevich's rough-wall collision model.
+// Copyright (C) 2026 roughWallInteraction authors. SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Every default and limit of the model's settings, defined once: used by the
+// OpenFOAM adapter's input checks, by roughWallStats's command line and by
+// the documentation.
+#pragma once
+
+namespace roughWall
+{
+namespace limits
+{
+
+//- Largest roughness angle Delta [deg]: beyond it facets tilted past the
+//  vertical (overhangs) become frequent (13 % of grazing hits at 45 deg)
+constexpr double maxRoughnessAngleDeg = 45;
+
+//- Bound on facet collisions per wall hit: default and allowed range
+constexpr int defaultMaxFacetCollisions = 10;
+constexpr int minMaxFacetCollisions = 1;
+constexpr int maxMaxFacetCollisions = 1000;
+
+//- Degrees to radians, for the settings given in degrees
+constexpr double degToRad(const double deg)
+{
+    return deg*(3.14159265358979323846/180.0);
+}
+
+//- Radians to degrees, for the statistics reported in degrees
+constexpr double radToDeg(const double rad)
+{
+    return rad*(180.0/3.14159265358979323846);
+}
+
+} // End namespace limits
+} // End namespace roughWall
