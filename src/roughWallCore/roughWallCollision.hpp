@@ -13,7 +13,8 @@
 //     gamma < pi/2: a facet tilted beyond the vertical is an overhang that a
 //     particle coming from above cannot hit, so such draws are redrawn (the
 //     distribution is truncated there and renormalised; the mass removed is
-//     below 1e-28 for Delta <= 8 deg, 2 % at Delta = 45 deg and grazing incidence).
+//     below 1e-28 for Delta <= 8 deg, 13.5 % (e^-2) at Delta = 45 deg and
+//     grazing incidence).
 //  3. Facet normal n = cos(gamma) N - sin(gamma) t. With lateralTilt (isotropic
 //     3-D roughness, never in 2-D) n is further rotated by delta ~ N(0, Delta),
 //     |delta| < pi/2, about the incidence direction v/|v|: this keeps the
