@@ -159,7 +159,7 @@ LIBRARY = "libroughWallInteraction.so"
 #: when running OpenFOAM-13
 _SYSTEM_OPENFOAM = re.compile(
     r"^/usr/lib/(x86_64-linux-gnu/)?(openfoam/)?"
-    r"lib(OpenFOAM|finiteVolume|meshTools|lagrangian\w*|Pstream|"
+    r"lib(OpenFOAM\w*|finiteVolume|meshTools|lagrangian\w*|Pstream|"
     r"OSspecific|fileFormats|surfMesh|triSurface|momentumTransportModels|"
     r"incompressibleMomentumTransportModels|physicalProperties|"
     r"fvModels|fvConstraints|sampling|tracking|dynamicMesh|"
@@ -196,12 +196,19 @@ def ldd(path):
 def check_openfoam13_libraries():
     """OpenFOAM-13 runs: foamRun, the modules it loads, the parcel library
     and libroughWallInteraction.so resolve no OpenFOAM library to Debian's
-    v1912 in /usr/lib, and none is missing."""
+    v1912 in /usr/lib (a known OpenFOAM library name, or any library of
+    /usr/lib whose name is also one of $FOAM_LIBBIN's), and none is
+    missing."""
+    foam_libs = set()
+    for root, _, files in os.walk(os.environ.get("FOAM_LIBBIN", "/none")):
+        if os.path.basename(root) != "dummy":   # stand-ins of metis, scotch
+            foam_libs.update(f for f in files if f.endswith(".so"))
     foam_run = shutil.which("foamRun")
     check(foam_run is not None, "openfoam13: foamRun is on the PATH")
     binaries = [foam_run]
-    for name in (LIBRARY, "liblagrangianParcel.so", "libincompressibleFluid.so",
-                 "libfunctions.so", "libfiniteVolume.so"):
+    for name in (LIBRARY, "liblagrangianParcel.so",
+                 "libincompressibleFluid.so", "libfunctions.so",
+                 "libfiniteVolume.so"):
         path = find_library(name)
         check(path is not None and not path.startswith("/usr/lib"),
               "openfoam13: %s found at %s" % (name, path))
@@ -209,7 +216,9 @@ def check_openfoam13_libraries():
     bad = []
     for binary in binaries:
         for name, path in ldd(binary).items():
-            if _SYSTEM_OPENFOAM.match(path) or (
+            system_copy = path.startswith("/usr/lib/") \
+                and os.path.basename(path) in foam_libs
+            if _SYSTEM_OPENFOAM.match(path) or system_copy or (
                     path == "not found" and name.startswith("lib")
                     and not name.startswith("libmpi")):
                 bad.append("%s: %s => %s" % (os.path.basename(binary), name,
@@ -963,9 +972,10 @@ def wall_impact_case(platform, path, kind="colliding", two_d=False,
         z = np.zeros(parcels) if two_d \
             else rng.uniform(-0.015, 0.015, parcels)
         a = math.radians(angle)
-        injectors.append(Injector(
-            "alpha%d" % angle, np.column_stack([x, np.full(parcels, 0.005), z]),
-            (math.cos(a), -math.sin(a), 0.0), d))
+        y = np.full(parcels, 0.005)
+        injectors.append(Injector("alpha%d" % angle,
+                                  np.column_stack([x, y, z]),
+                                  (math.cos(a), -math.sin(a), 0.0), d))
     case.write_injectors(injectors)
     case.write_settings(settings if settings is not None else DEFAULT_SETTINGS)
     return case
@@ -978,13 +988,15 @@ def set_wall_velocity(case, wall_velocity):
         path = case.file(name)
         if not os.path.exists(path):
             continue
-        write_text(path, read_text(path).replace("boundaryField\n{", """boundaryField
+        moving = """boundaryField
 {
     lowerWall
     {
         type            fixedValue;
         value           uniform (%r 0 0);
-    }""" % wall_velocity, 1))
+    }""" % wall_velocity
+        write_text(path, read_text(path).replace("boundaryField\n{", moving,
+                                                 1))
 
 
 def incident_velocity(angle, wall_velocity=0.0):

@@ -106,8 +106,8 @@ def test():
             "%.3e J); final %.3e J" % (label, max(kinetic), kinetic[0],
                                        bound, kinetic[-1]))
 
-    parts = case.cloud_parts("%g" % args.end_time,
-                             fields=("U", "d", "angularMomentum", "origProcId"))
+    parts = case.cloud_parts("%g" % args.end_time, fields=(
+        "U", "d", "angularMomentum", "origProcId"))
     t.check_inside_box(parts, parcels, *BOX, label=label)
     if args.np > 1:
         # Parcels crossed the processor boundary both ways
