@@ -38,6 +38,8 @@ SPDX-License-Identifier: GPL-3.0-or-later
 """
 
 import glob
+import hashlib
+import json
 import math
 import os
 import re
@@ -909,21 +911,56 @@ def sd_and_se(x):
         math.sqrt(max(m4 - m2*m2, 0)/n)/(2*math.sqrt(m2))
 
 
-def reference(binary, spin, delta_deg, alphas, samples=1000000, seed=1,
-              e=0.8, mu0=0.4, muD=0.4, lateral_tilt=False):
+#: The oracle: tests/oracle/roughWallOracle.py, an independent numpy Monte
+#: Carlo of the collision operator (its own sampler, no C++ core)
+ORACLE_DIR = os.path.join(REPO, "tests", "oracle")
+
+
+def reference(spin, delta_deg, alphas, samples=1000000, seed=1, e=0.8,
+              mu0=0.4, muD=0.4, lateral_tilt=False):
     """Reference rebound statistics {alpha: row} (mean_kn, se_mean_kn,
-    sd_kn, se_sd_kn, the same for kt) of one hit on a flat rough wall:
-    roughWallReference (the core with its own random stream)."""
-    args = [binary, "--spin", "1" if spin else "0", "--e", str(e),
-            "--mu0", str(mu0), "--muD", str(muD), "--Delta", str(delta_deg),
-            "--alpha", ",".join(str(a) for a in alphas),
-            "--lateralTilt", "1" if lateral_tilt else "0",
-            "--samples", str(samples), "--seed", str(seed)]
-    out = subprocess.check_output(args, text=True).strip().splitlines()
-    names = out[0].split(",")
+    sd_kn, se_sd_kn, the same for kt) of one hit at alpha [deg] on a flat
+    rough wall: roughWallOracle.restitution_statistics, samples per angle,
+    numpy's PCG64 seeded with seed; spin: spin produced by a facet collision
+    carried into the next (a cloud with spin).
+
+    Results are deterministic; with $ROUGHWALL_ORACLE_CACHE (set by ctest)
+    each angle's row is kept there, keyed by the arguments and the oracle's
+    source, and reused by the other tests and platforms."""
+    if ORACLE_DIR not in sys.path:
+        sys.path.insert(0, ORACLE_DIR)
+    import roughWallOracle
+    cache = os.environ.get("ROUGHWALL_ORACLE_CACHE")
+    source = hashlib.sha1(read_text(roughWallOracle.__file__).encode())
     rows = {}
-    for alpha, line in zip(alphas, out[1:]):
-        rows[alpha] = dict(zip(names, map(float, line.split(","))))
+    for alpha in alphas:
+        args = dict(alpha_deg=float(alpha), Delta_deg=float(delta_deg),
+                    e=e, mu0=mu0, muD=muD, samples=int(samples), seed=seed,
+                    spin=bool(spin), lateral=bool(lateral_tilt),
+                    oracle=source.hexdigest())
+        key = hashlib.sha1(json.dumps(args, sort_keys=True).encode())
+        path = os.path.join(cache, key.hexdigest() + ".json") if cache \
+            else None
+        if path and os.path.exists(path):
+            rows[alpha] = json.loads(read_text(path))["row"]
+            how = "cached"
+        else:
+            start = time.time()
+            rows[alpha] = roughWallOracle.restitution_statistics(
+                [alpha], delta_deg, e=e, mu0=mu0, muD=muD, samples=samples,
+                rng=np.random.default_rng(seed), spin=bool(spin),
+                lateral=bool(lateral_tilt))[0]
+            how = "%.1f s" % (time.time() - start)
+            if path:
+                os.makedirs(cache, exist_ok=True)
+                tmp = "%s.%d" % (path, os.getpid())
+                write_text(tmp, json.dumps({"args": args,
+                                            "row": rows[alpha]}))
+                os.replace(tmp, path)
+        print("oracle: alpha = %.4g deg, Delta = %g deg, %s%s, %d samples "
+              "(%s)" % (alpha, delta_deg, "spin" if spin else "no spin",
+                        ", lateral tilt" if lateral_tilt else "", samples,
+                        how), flush=True)
     return rows
 
 

@@ -18,7 +18,7 @@ non-zero for most parcels and the statistics agree with the reference WITH
 lateral tilt.
 
 Usage: test2D.py --platform openfoam13|openfoam1912 --cloud colliding|kinematic
-           --reference BIN [--parcels N] [--parcels3D N] [--work DIR]
+           [--parcels N] [--parcels3D N] [--work DIR]
 
 SPDX-License-Identifier: GPL-3.0-or-later
 """
@@ -39,7 +39,6 @@ SETTINGS = t.DEFAULT_SETTINGS.replace(
 def parse_args():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     t.add_platform_args(p)
-    p.add_argument("--reference", required=True)
     p.add_argument("--parcels", type=int, default=30000)
     p.add_argument("--parcels3D", type=int, default=10000)
     return p.parse_args()
@@ -57,8 +56,7 @@ def run_case(args, two_d, parcels):
 
 
 def reference_function(args, lateral_tilt):
-    rows = t.reference(args.reference, t.SPIN[args.cloud], 8,
-                       sorted(t.ANGLES),
+    rows = t.reference(t.SPIN[args.cloud], 8, sorted(t.ANGLES),
                        lateral_tilt=lateral_tilt)
     return lambda angle, d: (rows[angle], 8)
 
