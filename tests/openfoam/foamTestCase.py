@@ -98,6 +98,11 @@ class Platform:
         #: Name of the (only) cloud, its properties file
         self.cloud = "cloud" if self.foundation else "kinematicCloud"
         self.properties = self.cloud + "Properties"
+        #: Which cloud report of the log (counted from the end) describes
+        #: the cloud written at the end time: OpenFOAM-13's clouds function
+        #: object moves the cloud at the start of the next time step, after
+        #: the write, so the last step is reported but not written
+        self.written_report = -2 if self.foundation else -1
 
     def __str__(self):
         return self.name
@@ -884,10 +889,16 @@ def system_escapes(log):
     return int(counts[-1]) if counts else -1
 
 
+def parcel_counts(log):
+    """The parcel counts of the cloud reports of a log."""
+    return [int(n) for n in
+            re.findall(r"Current number of parcels\s*=\s*(\d+)", log)]
+
+
 def final_parcels(log):
     """The parcel count of the last cloud report of a log (-1: none)."""
-    counts = re.findall(r"Current number of parcels\s*=\s*(\d+)", log)
-    return int(counts[-1]) if counts else -1
+    counts = parcel_counts(log)
+    return counts[-1] if counts else -1
 
 
 # ---------------------------------------------------------------------------

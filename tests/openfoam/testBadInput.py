@@ -4,10 +4,14 @@ keyword and the allowed range.
 
 Runs the solver on a small 2-D wall-impact case once per bad entry of
 roughWallInteractionCoeffs and checks that it fails (non-zero exit code, no
-crash) with "FOAM FATAL IO ERROR", the dictionary name (the cloud
-properties file: kinematicCloudProperties on v1912, cloudProperties on
-OpenFOAM-13, and the scope roughWallInteractionCoeffs.patches.<entry>), the
-keyword and the allowed values in the log.  Controls: the unmodified settings
+crash) with "FOAM FATAL IO ERROR", the dictionary name, the keyword and the
+allowed values in the log.  The dictionary name differs between the
+platforms (the settings are #include'd from constant/roughWallSettings):
+  v1912  .../constant/kinematicCloudProperties.subModels.
+         roughWallInteractionCoeffs.patches.<entry>
+  13     .../constant/roughWallSettings/roughWallInteractionCoeffs/
+         patches.<entry> (OpenFOAM-13 names an included dictionary after
+         its file and scopes with '/')  Controls: the unmodified settings
 run and write the statistics file, writeToFile false writes none; without the
 libs entry the run fails with OpenFOAM's "Unknown patchInteractionModel type
 roughWallInteraction" (v1912) or "Unknown patch interaction model type
@@ -59,7 +63,24 @@ roughWallInteractionCoeffs
 """ % (patch_list if patches else "")
 
 
-IN_PATCH = "roughWallInteractionCoeffs.patches.(lowerWall|upperWall)"
+class Scope:
+    """The dictionary scope of a patches entry in the error message:
+    v1912 roughWallInteractionCoeffs.patches.<entry>; OpenFOAM-13 scopes
+    with '/' (roughWallInteractionCoeffs/patches, then '.' or '/' and the
+    entry), in the dictionary of the included roughWallSettings."""
+
+    def __init__(self, entry):
+        self.entry = entry
+
+    def texts(self, platform):
+        if platform.foundation:
+            return ["roughWallInteractionCoeffs/patches%s%s" % (sep, self.entry)
+                    for sep in "./"]
+        return ["roughWallInteractionCoeffs.patches." + self.entry]
+
+
+IN_PATCH = Scope("(lowerWall|upperWall)")
+IN_OUTLET = Scope("outlet")
 
 #: name, settings, texts that the log must contain
 CASES = [
@@ -116,12 +137,10 @@ CASES = [
      ["keyword 'lateralTilt'", IN_PATCH, "true/false, on/off, yes/no"]),
     ("rebound e above 1",
      settings(outlet="outlet { type rebound; e 2; }"),
-     ["keyword 'e'", "roughWallInteractionCoeffs.patches.outlet",
-      "a number in [0, 1]", "'2'"]),
+     ["keyword 'e'", IN_OUTLET, "a number in [0, 1]", "'2'"]),
     ("rebound mu negative",
      settings(outlet="outlet { type rebound; mu -1; }"),
-     ["keyword 'mu'", "roughWallInteractionCoeffs.patches.outlet",
-      "a number in [0, 1]"]),
+     ["keyword 'mu'", IN_OUTLET, "a number in [0, 1]"]),
     ("none on a wall", settings({"type": "none", "e": None, "mu0": None,
                                  "muD": None, "roughnessAngle": None}),
      ["keyword 'patches'", "roughWallInteractionCoeffs",
@@ -138,9 +157,13 @@ CASES = [
       "expected '{' after outlet"]),
 ]
 
-#: Signs of a crash instead of a clean fatal error (a stack trace)
-CRASH_SIGNS = ["sigSegv", "sigFpe", "Segmentation fault", "core dumped",
-               "printStack"]
+#: Signs of a crash instead of a clean fatal error (a stack trace; not the
+#: floating point trapping notes of the log headers, v1912's "trapFpe:
+#: Floating point exception trapping enabled" and OpenFOAM-13's "sigFpe :
+#: Enabling floating point exception trapping"); a process killed by a
+#: signal (rc < 0) is one too
+CRASH_SIGNS = ["sigSegv::sigHandler", "sigFpe::sigHandler",
+               "Segmentation fault", "core dumped", "printStack"]
 
 
 def parse_args():
@@ -173,19 +196,28 @@ def test():
     t.check(rc == 0 and not os.path.exists(stats_dir),
             "control: writeToFile false runs and writes no statistics file")
 
+    # The file named in the message: v1912 names an #include'd dictionary
+    # after the including file, OpenFOAM-13 after the included one
+    settings_file = "constant/roughWallSettings" if platform.foundation \
+        else "constant/" + platform.properties
     for i, (name, text, expected) in enumerate(CASES):
         case.write_settings(text)
         log = "log.bad%02d" % i
         rc, _ = case.solve(log, check_rc=False)
         out = case.log(log)
-        missing = [e for e in ["FOAM FATAL IO ERROR", platform.properties]
-                   + expected if e not in out]
-        crashed = [s for s in CRASH_SIGNS if s in out]
+        expected = [e.texts(platform) if isinstance(e, Scope) else e
+                    for e in ["FOAM FATAL IO ERROR", settings_file] + expected]
+        missing = [e for e in expected if not (
+            any(alt in out for alt in e) if isinstance(e, list) else e in out)]
+        crashed = [s for s in CRASH_SIGNS if s in out] \
+            + (["signal %d" % -rc] if rc < 0 else [])
         t.check(rc != 0 and not missing and not crashed,
                 "%s: rc %d, %s%s" % (
                     name, rc,
                     "missing text %s" % missing if missing else
-                    "error names %s" % ", ".join(expected),
+                    "error names %s" % ", ".join(
+                        e if isinstance(e, str) else " or ".join(e)
+                        for e in expected[1:]),
                     ", CRASH %s" % crashed if crashed else ""))
 
     # Control: without libs the model is unknown (troubleshooting symptom)
