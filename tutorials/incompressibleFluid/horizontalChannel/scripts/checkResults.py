@@ -1,0 +1,171 @@
+#!/usr/bin/python3
+"""Assertions of the horizontalChannel smoke test (Alltest).
+
+Usage: checkResults.py [--record FILE] SHORT_RESULTS_DIR [REFERENCE_RESULTS_DIR]
+
+SHORT_RESULTS_DIR is the result of ./Allrun -test (variants smooth,
+rough2.5, rough5); REFERENCE_RESULTS_DIR the committed result of the default
+run (results/).
+
+1. Sanity: profiles.csv, summary.csv and the figures exist; every variant
+   has N_BINS height bins; every number written is finite; the
+   concentration is normalised (mean over the bins = 1).
+2. The roughness effect: for each of the two statistics of ORDERED, the
+   short run orders smooth < rough2.5 < rough5, each difference larger
+   than MARGIN_SE combined standard errors. A model that lost the effect of
+   roughness (or of one roughness level) fails here.
+3. Agreement with the committed result: for every variant of the short run
+   and every statistic of BAND, |short - reference| <= the band of that
+   statistic: BAND_SE combined standard errors plus an allowance for the
+   short run's shorter spin-up (the statistic's drift; see README.md,
+   "Smoke test").
+"""
+import csv
+import math
+import os
+import sys
+from collections import defaultdict
+
+N_BINS = 25
+MARGIN_SE = 3.0
+ORDER = ("smooth", "rough2.5", "rough5")
+#: The statistics that must order the variants (summary.csv columns)
+ORDERED = ("upperFraction", "UyRms")
+#: Band of the agreement with the reference: statistic -> (number of combined
+#: standard errors, absolute allowance)
+BAND_SE = 4.0
+BAND = {"upperFraction": 0.03, "UyRms": 0.03}
+FIGURES = ("concentration.png", "velocity.png", "wallHits.png", "spinUp.png")
+
+failures = []
+#: The quantitative checks: (check, measured, required, margin)
+records = []
+
+
+def check(condition, message):
+    print(("PASS  " if condition else "FAIL  ") + message, flush=True)
+    if not condition:
+        failures.append(message)
+    return condition
+
+
+def read_csv(path):
+    if not os.path.isfile(path) or os.path.getsize(path) == 0:
+        check(False, "%s exists and is not empty" % path)
+        sys.exit(1)
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def finite_numbers(rows, name, text_columns):
+    bad = []
+    for i, row in enumerate(rows):
+        for key, value in row.items():
+            if key in text_columns or value == "":
+                continue
+            try:
+                v = float(value)
+            except ValueError:
+                bad.append("row %d %s = %r" % (i, key, value))
+                continue
+            if not math.isfinite(v):
+                bad.append("row %d %s = %r" % (i, key, value))
+    check(not bad, "%s: every number finite%s" % (name, ": " + ", ".join(bad[:5])
+                                                  if bad else ""))
+
+
+def sanity(out):
+    for fig in FIGURES:
+        p = os.path.join(out, fig)
+        check(os.path.isfile(p) and os.path.getsize(p) > 1000,
+              "figure %s written" % fig)
+    profiles = read_csv(os.path.join(out, "profiles.csv"))
+    finite_numbers(profiles, "profiles.csv", {"variant"})
+    summary = read_csv(os.path.join(out, "summary.csv"))
+    finite_numbers(summary, "summary.csv", {"variant", "wallModel"})
+    bins = defaultdict(list)
+    for row in profiles:
+        bins[row["variant"]].append(row)
+    for variant, rows in bins.items():
+        check(len(rows) == N_BINS, "%s: %d height bins" % (variant, N_BINS))
+        c = [float(r["concentration"]) for r in rows if r["concentration"]]
+        check(len(c) == N_BINS and abs(sum(c)/len(c) - 1) < 1e-5,
+              "%s: concentration given in every bin, mean 1" % variant)
+    return {row["variant"]: row for row in summary}
+
+
+def value(row, key):
+    return float(row[key]), float(row[key + "_se"])
+
+
+def write_records(path, run):
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["check", "value", "limit", "margin", "run"])
+        for r in records:
+            w.writerow(list(r) + [run])
+
+
+def main():
+    args = sys.argv[1:]
+    record = None
+    if args[:1] == ["--record"]:
+        record, args = args[1], args[2:]
+    out = args[0]
+    reference = args[1] if len(args) > 1 else None
+    summary = sanity(out)
+    for v in ORDER:
+        if not check(v in summary, "variant %s in the short run" % v):
+            sys.exit(1)
+
+    # 2. Roughness orders the variants
+    for key in ORDERED:
+        for a, b in zip(ORDER[:-1], ORDER[1:]):
+            (va, sa), (vb, sb) = value(summary[a], key), value(summary[b], key)
+            margin = MARGIN_SE*math.hypot(sa, sb)
+            records.append(("%s: %s - %s" % (key, b, a), "%.4g" % (vb - va),
+                            "> %.3g (%g s.e.)" % (margin, MARGIN_SE),
+                            "%.1f" % ((vb - va)/margin) if margin > 0 else "inf"))
+            check(vb - va > margin,
+                  "%s: %s %.4f < %s %.4f by %.4f, more than %g combined "
+                  "standard errors (%.4f)" % (key, a, va, b, vb, vb - va,
+                                              MARGIN_SE, margin))
+
+    # 3. Within the band of the committed result
+    if reference:
+        ref = {row["variant"]: row for row in
+               read_csv(os.path.join(reference, "summary.csv"))}
+        for v in ORDER:
+            if not check(v in ref, "variant %s in the reference %s"
+                         % (v, reference)):
+                continue
+            for key, allowance in BAND.items():
+                (x, sx), (r, sr) = value(summary[v], key), value(ref[v], key)
+                band = BAND_SE*math.hypot(sx, sr) + allowance
+                records.append(("%s %s: short - committed" % (v, key),
+                                "%.3g" % (x - r), "within +-%.3g" % band,
+                                "%.2f" % (abs(x - r)/band)))
+                check(abs(x - r) <= band,
+                      "%s %s: short run %.4f, committed %.4f, difference "
+                      "%.4f within the band %.4f (%g combined s.e. + %g)"
+                      % (v, key, x, r, x - r, band, BAND_SE, allowance))
+
+    if record:
+        info = {}
+        with open(os.path.join(out, "runInfo")) as f:
+            for line in f:
+                if line.strip():
+                    k, v = line.split(None, 1)
+                    info[k] = v.strip()
+        write_records(record, "%s, commit %s, %s s" % (
+            info.get("date", "?"), info.get("commit", "?"),
+            info.get("totalSeconds", "?")))
+    if failures:
+        print("checkResults: FAILED (%d): %s" % (len(failures),
+                                                  "; ".join(failures)))
+        sys.exit(1)
+    print("checkResults: passed")
+
+
+if __name__ == "__main__":
+    main()

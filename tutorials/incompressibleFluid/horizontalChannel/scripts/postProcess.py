@@ -1,0 +1,484 @@
+#!/usr/bin/python3
+"""Profiles, wall-hit statistics, figures and the summary of horizontalChannel.
+
+Reads, for each tracking case, the parcel samples collected by
+collectSamples.py (CASE/parcelSamples.npz), the roughWallInteraction
+statistics under CASE/postProcessing/ and CASE/caseInfo (written by Allrun),
+and writes into OUT_DIR:
+
+  profiles.csv          per variant and height bin: y/H, normalised number
+                        concentration, mean and rms of the streamwise and
+                        wall-normal parcel velocity, standard error of each
+  summary.csv           per variant: fraction of parcels in the upper half,
+                        rms wall-normal parcel velocity, mean height, wall
+                        hits per parcel per metre, mean k_n and k_t, wall-clock
+                        and CPU time of the run
+  concentration.png     concentration profiles of all variants
+  velocity.png          velocity profiles of all variants
+  wallHits.png          wall-hit statistics
+  spinUp.png            approach to the statistically steady state
+
+Statistics: the parcels do not interact (one-way coupling, no parcel-parcel
+collisions), so they are independent realisations. They are split into
+N_GROUPS groups by their id; the standard error of every statistic is the
+jackknife (leave-one-group-out) estimate over the groups. The samples of one
+parcel at different times are correlated; keeping whole parcels in one group
+makes the estimate account for that.
+
+Usage: postProcess.py OUT_DIR CASE_DIR [CASE_DIR ...]
+"""
+import csv
+import os
+import re
+import sys
+
+import numpy as np
+
+import tutorialCommon as tc
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+N_BINS = 25
+N_GROUPS = 20
+MIN_SAMPLES = 10        # velocity statistics of a bin need this many samples
+WALLS = tc.WALLS
+EPS_TIME = 1e-9
+
+
+# ----------------------------------------------------------------------------
+# Reading
+
+def read_model_statistics(case):
+    """Rows of roughWallInteraction.dat (cumulative totals) as a dict of
+    arrays, or None (a variant without the rough-wall model)."""
+    try:
+        names, rows = tc.read_statistics(case, tc.CLOUD)
+    except tc.ftc.TestFailure:
+        return None
+    return {n: np.array([r[n] for r in rows]) for n in names}
+
+
+def window_model_statistics(stats, t0, t1):
+    """Hits, mean k_n, k_t and facet tilt of the hits between t0 and t1.
+
+    The file holds running totals and running means over all hits; the
+    window values follow from the differences of hits x mean.
+    """
+    time = stats["Time"]
+    i0 = max(np.searchsorted(time, t0 + EPS_TIME) - 1, 0)
+    i1 = max(np.searchsorted(time, t1 + EPS_TIME) - 1, 0)
+    out = {}
+    for wall in WALLS:
+        if f"{wall}_hits" not in stats:
+            continue
+        h = stats[f"{wall}_hits"]
+        dh = h[i1] - h[i0]
+        out[f"{wall}_modelHits"] = dh
+        for col, key in (("meanKn", "kn"), ("meanKt", "kt"), ("meanGamma", "gammaDeg"),
+                         ("facetPerHit", "facetPerHit")):
+            m = stats[f"{wall}_{col}"]
+            out[f"{wall}_{key}"] = (m[i1]*h[i1] - m[i0]*h[i0])/dh if dh > 0 else np.nan
+    return out
+
+
+# ----------------------------------------------------------------------------
+# Statistics
+
+def jackknife(stat, sums):
+    """Value and jackknife standard error of stat(sums) over the groups.
+
+    sums: dict of arrays with a leading group axis; stat maps a dict of
+    arrays without that axis (the pooled sums) to the statistic.
+    """
+    total = {k: v.sum(axis=0) for k, v in sums.items()}
+    value = np.asarray(stat(total), float)
+    g = next(iter(sums.values())).shape[0]
+    loo = np.array([stat({k: total[k] - v[i] for k, v in sums.items()}) for i in range(g)],
+                   float)
+    with np.errstate(invalid="ignore"):
+        centred = loo - np.mean(loo, axis=0)
+        se = np.sqrt((g - 1)/g*np.sum(centred**2, axis=0))
+    se = np.where(np.isfinite(value), se, np.nan)
+    return value, se
+
+
+def analyse(case):
+    info = tc.read_case_info(case)
+    H, d = info["height"], info["diameter"]
+    r = 0.5*d
+    s = np.load(os.path.join(case, "parcelSamples.npz"))
+    time, count = s["time"], s["count"]
+    snap = np.repeat(np.arange(len(time)), count)
+    y = s["y"].astype(float) + r        # tracking coordinate -> channel height
+    ux, uy = s["Ux"].astype(float), s["Uy"].astype(float)
+    spin = 0.5*d*s["omegaZ"].astype(float)     # surface speed of the spin [m/s]
+    group = s["id"] % N_GROUPS
+
+    # Spin-up history: every write time
+    up = y > 0.5*H
+    history = np.array([(t, np.mean(up[snap == i]), np.mean(ux[snap == i]),
+                         np.mean(spin[snap == i]), np.std(uy[snap == i]))
+                        for i, t in enumerate(time)])
+
+    # Sampling window: write times from the end of the spin-up on
+    sampled = np.nonzero(time >= info["spinUp"] - EPS_TIME)[0]
+    if len(sampled) < 2:
+        raise RuntimeError("%s: fewer than 2 snapshots after the spin-up" % case)
+    t0, t1 = time[sampled[0]], time[sampled[-1]]
+    mask = snap >= sampled[0]
+    y, ux, uy, spin = y[mask], ux[mask], uy[mask], spin[mask]
+    group, snap = group[mask], snap[mask]
+
+    edges = np.linspace(r, H - r, N_BINS + 1)
+    b = np.clip(np.searchsorted(edges, y, side="right") - 1, 0, N_BINS - 1)
+    sums = {}
+    for k, w in (("n", np.ones_like(y)), ("ux", ux), ("uy", uy),
+                 ("ux2", ux*ux), ("uy2", uy*uy)):
+        a = np.zeros((N_GROUPS, N_BINS))
+        np.add.at(a, (group, b), w)
+        sums[k] = a
+    width = edges[1] - edges[0]
+
+    def concentration(t):
+        return t["n"]/t["n"].sum()*(H - d)/width
+
+    def mean(key):
+        def f(t):
+            with np.errstate(invalid="ignore", divide="ignore"):
+                return np.where(t["n"] >= MIN_SAMPLES, t[key]/t["n"], np.nan)
+        return f
+
+    def rms(key, key2):
+        def f(t):
+            with np.errstate(invalid="ignore", divide="ignore"):
+                n = t["n"]
+                m = t[key]/n
+                var = np.maximum(t[key2]/n - m*m, 0)*n/(n - 1)
+                return np.where(n >= MIN_SAMPLES, np.sqrt(var), np.nan)
+        return f
+
+    prof = {"y_over_H": 0.5*(edges[:-1] + edges[1:])/H,
+            "samples": sums["n"].sum(axis=0)}
+    prof["concentration"], prof["concentration_se"] = jackknife(concentration, sums)
+    for name, fun in (("Ux_mean", mean("ux")), ("Uy_mean", mean("uy")),
+                      ("Ux_rms", rms("ux", "ux2")), ("Uy_rms", rms("uy", "uy2"))):
+        prof[name], prof[name + "_se"] = jackknife(fun, sums)
+
+    # Scalars over the window and over its first and second halves (drift)
+    late = (time[snap] > 0.5*(t0 + t1)).astype(int)
+    scal = {}
+    for k, w in (("n", np.ones_like(y)), ("up", (y > 0.5*H).astype(float)),
+                 ("y", y/H), ("ux", ux), ("uy", uy), ("uy2", uy*uy),
+                 ("spin", spin)):
+        a = np.zeros((N_GROUPS, 2))
+        np.add.at(a, (group, late), w)
+        scal[k] = a
+
+    def uy_rms(t, i=slice(None)):
+        n = t["n"][i].sum()
+        m = t["uy"][i].sum()/n
+        return np.sqrt(max(t["uy2"][i].sum()/n - m*m, 0))
+
+    summary = dict(info)
+    for name, fun in (
+            ("upperFraction", lambda t: t["up"].sum()/t["n"].sum()),
+            ("upperFractionEarly", lambda t: t["up"][0]/t["n"][0]),
+            ("upperFractionLate", lambda t: t["up"][1]/t["n"][1]),
+            ("UyRms", uy_rms),
+            ("UyRmsEarly", lambda t: uy_rms(t, slice(0, 1))),
+            ("UyRmsLate", lambda t: uy_rms(t, slice(1, 2))),
+            ("meanHeight", lambda t: t["y"].sum()/t["n"].sum()),
+            ("meanUx", lambda t: t["ux"].sum()/t["n"].sum()),
+            ("meanUxEarly", lambda t: t["ux"][0]/t["n"][0]),
+            ("meanUxLate", lambda t: t["ux"][1]/t["n"][1]),
+            ("meanSpinSpeed", lambda t: t["spin"].sum()/t["n"].sum())):
+        summary[name], summary[name + "_se"] = (float(v) for v in jackknife(fun, scal))
+    summary.update(snapshots=len(sampled), samples=int(mask.sum()),
+                   sampleStart=t0, sampleEnd=t1)
+
+    # Wall hits in the window, per parcel and metre travelled
+    travelled = info["nParcels"]*summary["meanUx"]*(t1 - t0)
+    impacts = s["wallImpacts"]
+    model = read_model_statistics(case)
+    mstats = window_model_statistics(model, t0, t1) if model is not None else {}
+    for j, wall in enumerate(WALLS):
+        summary["impactsPerParcelPerMetre_" + wall] = \
+            (impacts[sampled[-1], j] - impacts[sampled[0], j])/travelled
+        if wall + "_modelHits" in mstats:
+            summary["hitsPerParcelPerMetre_" + wall] = \
+                mstats[wall + "_modelHits"]/travelled
+            for key in ("kn", "kt", "gammaDeg", "facetPerHit"):
+                summary["%s_%s" % (key, wall)] = mstats["%s_%s" % (wall, key)]
+    if mstats:
+        w = np.array([mstats.get(wall + "_modelHits", 0) for wall in WALLS])
+        for key in ("kn", "kt"):
+            v = np.array([mstats.get("%s_%s" % (wall, key), np.nan) for wall in WALLS])
+            ok = w > 0
+            summary[key + "_mean"] = float(np.sum(w[ok]*v[ok])/w[ok].sum()) \
+                if ok.any() else np.nan
+    return info, prof, summary, history
+
+
+# ----------------------------------------------------------------------------
+# Output
+
+PROFILE_COLUMNS = ["y_over_H", "concentration", "concentration_se",
+                   "Ux_mean", "Ux_mean_se", "Uy_mean", "Uy_mean_se",
+                   "Ux_rms", "Ux_rms_se", "Uy_rms", "Uy_rms_se", "samples"]
+
+SUMMARY_COLUMNS = [
+    "variant", "wallModel", "roughnessAngle", "diameter", "nParcels", "deltaT",
+    "sampleStart", "sampleEnd", "snapshots", "samples",
+    "upperFraction", "upperFraction_se", "upperFractionEarly", "upperFractionEarly_se",
+    "upperFractionLate", "upperFractionLate_se", "UyRms", "UyRms_se",
+    "UyRmsEarly", "UyRmsEarly_se", "UyRmsLate", "UyRmsLate_se",
+    "meanHeight", "meanHeight_se",
+    "meanUx", "meanUx_se", "meanUxEarly", "meanUxEarly_se", "meanUxLate", "meanUxLate_se",
+    "meanSpinSpeed", "meanSpinSpeed_se",
+    "hitsPerParcelPerMetre_lowerWall", "hitsPerParcelPerMetre_upperWall",
+    "impactsPerParcelPerMetre_lowerWall", "impactsPerParcelPerMetre_upperWall",
+    "kn_mean", "kt_mean", "kn_lowerWall", "kt_lowerWall", "kn_upperWall", "kt_upperWall",
+    "gammaDeg_lowerWall", "gammaDeg_upperWall", "facetPerHit_lowerWall",
+    "facetPerHit_upperWall", "wallClock", "cpuTime"]
+
+
+def fmt(v):
+    if isinstance(v, str):
+        return v
+    return "" if v is None or not np.isfinite(v) else "%.6g" % v
+
+
+def write_profiles(path, results):
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["variant", "diameter_m", "bin"] + PROFILE_COLUMNS)
+        for info, prof, _, _ in results:
+            for i in range(N_BINS):
+                w.writerow([info["variant"], "%g" % info["diameter"], i]
+                           + [fmt(prof[c][i]) for c in PROFILE_COLUMNS])
+
+
+def write_summary(path, results):
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(SUMMARY_COLUMNS)
+        for _, _, s, _ in results:
+            w.writerow([fmt(s.get(c)) for c in SUMMARY_COLUMNS])
+
+
+def label(info):
+    if info.get("wallModel") == "roughWallInteraction":
+        if info.get("roughnessAngle", 0) == 0:
+            return "rough-wall model, $\\Delta$ = 0 (smooth)"
+        return "rough-wall model, $\\Delta$ = %g$^\\circ$" % info["roughnessAngle"]
+    return "standardWallInteraction"
+
+
+def title(d):
+    return "glass beads %d $\\mu$m, air 20 m/s, H = 35 mm" % round(d*1e6)
+
+
+def plot_concentration(path, results, d):
+    fig, ax = plt.subplots(figsize=(5.8, 5.4))
+    for info, prof, s, _ in results:
+        c, se, y = prof["concentration"], prof["concentration_se"], prof["y_over_H"]
+        ok = c > 0
+        ax.errorbar(c[ok], y[ok], xerr=se[ok], marker="o", ms=3.5, capsize=2, lw=1.2,
+                    label="%s: %.1f %% in upper half" % (label(info), 100*s["upperFraction"]))
+    ax.set_xscale("log")
+    ax.axvline(1, color="0.6", lw=0.8, ls=":")
+    ax.axhline(0.5, color="0.6", lw=0.8, ls=":")
+    ax.set_xlabel("normalised number concentration $n/\\bar{n}$  (log scale)")
+    ax.set_ylabel("$y/H$")
+    ax.set_ylim(0, 1)
+    ax.set_title("Concentration, " + title(d), fontsize=9)
+    ax.legend(fontsize=7, loc="upper right")
+    ax.grid(alpha=0.3, which="both")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def plot_velocity(path, results, d, carrier):
+    fig, axs = plt.subplots(1, 4, figsize=(13, 4.6), sharey=True)
+    panels = [("Ux_mean", "mean streamwise $U_{p}$ [m/s]"),
+              ("Uy_mean", "mean wall-normal $V_{p}$ [m/s]"),
+              ("Ux_rms", "rms $u'_{p}$ [m/s]"), ("Uy_rms", "rms $v'_{p}$ [m/s]")]
+    for ax, (col, xlabel) in zip(axs, panels):
+        for info, prof, _, _ in results:
+            v, se, y = prof[col], prof[col + "_se"], prof["y_over_H"]
+            ok = np.isfinite(v)
+            ax.errorbar(v[ok], y[ok], xerr=se[ok], marker="o", ms=3, capsize=2, lw=1.1,
+                        label=label(info))
+        ax.set_xlabel(xlabel)
+        ax.grid(alpha=0.3)
+    if carrier is not None:
+        axs[0].plot(carrier[1], carrier[0], "k--", lw=1, label="air (RANS)")
+    axs[0].set_ylabel("$y/H$")
+    axs[0].set_ylim(0, 1)
+    axs[0].legend(fontsize=7)
+    fig.suptitle("Parcel velocity, " + title(d) + " (bins with at least %d samples)"
+                 % MIN_SAMPLES, fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+
+
+def plot_wall_hits(path, results, d):
+    names = [label(info).replace("rough-wall model, ", "") for info, _, _, _ in results]
+    x = np.arange(len(names))
+    fig, axs = plt.subplots(1, 3, figsize=(14, 4.2))
+    for i, wall in enumerate(WALLS):
+        impacts = [s.get("impactsPerParcelPerMetre_" + wall, np.nan) for _, _, s, _ in results]
+        model = [s.get("hitsPerParcelPerMetre_" + wall, np.nan) for _, _, s, _ in results]
+        axs[0].bar(x + (i - 0.5)*0.38, impacts, 0.38, label=wall)
+        axs[0].plot(x + (i - 0.5)*0.38, model, "k_", ms=14, mew=2,
+                    label="roughWallInteraction's count" if i == 0 else None)
+    axs[0].set_ylabel("wall impacts per parcel per metre")
+    axs[0].set_title("impacts faster than 5 cm/s (bars)", fontsize=9)
+    for j, (key, name) in enumerate((("kn", "mean $k_n$"), ("kt", "mean $k_t$"))):
+        ax = axs[1 + j]
+        for i, wall in enumerate(WALLS):
+            vals = [s.get("%s_%s" % (key, wall), np.nan) for _, _, s, _ in results]
+            ax.bar(x + (i - 0.5)*0.38, vals, 0.38, label=wall)
+        ax.set_ylabel(name)
+        ax.set_title(name + " per hit (rough-wall model's statistics)", fontsize=9)
+    for ax in axs:
+        ax.set_xticks(x)
+        ax.set_xticklabels(names, fontsize=7)
+        ax.grid(alpha=0.3, axis="y")
+        ax.legend(fontsize=7)
+    fig.suptitle("Wall-hit statistics over the sampling window, " + title(d), fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+
+
+def plot_spin_up(path, results, d):
+    fig, axs = plt.subplots(1, 4, figsize=(16, 4))
+    for info, _, s, hist in results:
+        line, = axs[0].plot(hist[:, 0], 100*hist[:, 1], label=label(info))
+        axs[1].plot(hist[:, 0], hist[:, 4], color=line.get_color())
+        axs[2].plot(hist[:, 0], hist[:, 2], color=line.get_color())
+        axs[3].plot(hist[:, 0], hist[:, 3], color=line.get_color())
+    for ax in axs:
+        ax.axvline(results[0][2]["sampleStart"], color="k", ls=":", lw=1)
+        ax.set_xlabel("time [s]")
+        ax.grid(alpha=0.3)
+    axs[0].set_ylabel("parcels in the upper half [%]")
+    axs[1].set_ylabel("rms wall-normal parcel velocity [m/s]")
+    axs[2].set_ylabel("mean streamwise parcel velocity [m/s]")
+    axs[3].set_ylabel("mean spin, surface speed $\\omega_z d/2$ [m/s]")
+    axs[0].legend(fontsize=7)
+    fig.suptitle("Spin-up (dotted: start of sampling), " + title(d), fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+
+
+def carrier_profile(info):
+    """(y/H, U) of the air, from the carrier run."""
+    try:
+        carrier, time = info["carrier"], "%d" % info["carrierTime"]
+        mesh = tc.Mesh(carrier)
+        y = mesh.cell_centres[:, 1] - mesh.lo[1]
+        U = tc.internal_field(os.path.join(carrier, time, "U"))[:, 0]
+        order = np.argsort(y)
+        return y[order]/info["height"], U[order]
+    except (KeyError, OSError, ValueError):
+        return None
+
+
+def carrier_statistics(info):
+    """The converged carrier flow: friction velocity (from the viscous
+    sublayer: u_tau^2 = nu U_1/y_1 at the first cell, y+ < 1), Re_tau,
+    centreline and bulk velocity, kinematic pressure gradient (the
+    meanVelocityForce's last report), y+ of the first cell centre, air
+    velocity at one bead radius from the wall."""
+    carrier, time = info["carrier"], "%d" % info["carrierTime"]
+    mesh = tc.Mesh(carrier)
+    y = mesh.cell_centres[:, 1] - mesh.lo[1]
+    U = tc.internal_field(os.path.join(carrier, time, "U"))[:, 0]
+    rows, inv = np.unique(np.round(y, 12), return_inverse=True)
+    u = np.bincount(inv, weights=U)/np.bincount(inv)
+    H = mesh.hi[1] - mesh.lo[1]
+    props = tc.ftc.read_text(os.path.join(carrier, "constant",
+                                          "physicalProperties"))
+    nu = float(re.search(r"^nu\s+([^;]+);", props, re.M).group(1))
+    lower = rows < 0.5*H
+    u_tau = np.sqrt(nu*u[0]/rows[0])
+    heights = np.diff(np.r_[0, 0.5*(rows[1:] + rows[:-1]), H])
+    log = tc.ftc.read_text(os.path.join(carrier, "log.foamRun"))
+    grad = re.findall(r"pressure gradient = (%s)" % tc.ftc.NUMBER, log)
+    r = 0.5*info["diameter"]
+    return {
+        "uTau": u_tau, "ReTau": u_tau*0.5*H/nu, "Ucentreline": u.max(),
+        "Ubulk": float(np.sum(u*heights)/H),
+        "pressureGradient": float(grad[-1]) if grad else np.nan,
+        "yPlusFirstCell": rows[0]*u_tau/nu,
+        "Uradius": float(np.interp(r, np.r_[0, rows[lower]], np.r_[0, u[lower]])),
+        "yPlusRadius": r*u_tau/nu, "iterations": info["carrierTime"],
+        "nu": nu, "height": H}
+
+
+def write_carrier(path, stats):
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(list(stats))
+        w.writerow([fmt(float(v)) for v in stats.values()])
+
+
+def print_summary(results):
+    print("\nhorizontalChannel: statistics over the sampling window (standard errors in "
+          "brackets)")
+    head = ("%-13s %8s %15s %13s %15s %14s %7s %7s %10s %10s %6s %6s %8s"
+            % ("variant", "samples", "upper half [%]", "drift [%]", "rms V_p [m/s]",
+               "<y>/H", "<Up>", "<spin>", "hits/m low", "hits/m up", "k_n", "k_t",
+               "wall [s]"))
+    print(head)
+    print("-"*len(head))
+    for info, prof, s, _ in results:
+        drift = s["upperFractionLate"] - s["upperFractionEarly"]
+        drift_se = np.hypot(s["upperFractionLate_se"], s["upperFractionEarly_se"])
+        print("%-13s %8d %7.2f (%4.2f) %6.2f (%4.2f) %7.4f (%5.4f) %6.3f (%5.3f) %7.2f "
+              "%7.2f %10.3g %10.3g %6.3g %6.3g %8.1f" % (
+                  info["variant"], s["samples"],
+                  100*s["upperFraction"], 100*s["upperFraction_se"], 100*drift,
+                  100*drift_se, s["UyRms"], s["UyRms_se"],
+                  s["meanHeight"], s["meanHeight_se"], s["meanUx"],
+                  s["meanSpinSpeed"], s["impactsPerParcelPerMetre_lowerWall"],
+                  s["impactsPerParcelPerMetre_upperWall"],
+                  s.get("kn_mean", np.nan), s.get("kt_mean", np.nan),
+                  s.get("wallClock", np.nan)))
+    print("upper half: parcels above y = H/2 (50 % = uniform); drift: second half of "
+          "the sampling window minus first half;\nrms V_p: rms wall-normal parcel "
+          "velocity; <Up>: mean streamwise parcel velocity [m/s]; <spin>: mean surface "
+          "speed\nof the spin, omega_z d/2 [m/s]; hits/m: wall impacts (faster than "
+          "5 cm/s) per parcel per metre travelled;\nk_n, k_t: mean restitution ratios "
+          "per hit (rough-wall model); wall: wall-clock time of the tracking run [s].")
+
+
+def main():
+    out = sys.argv[1]
+    cases = sys.argv[2:]
+    os.makedirs(out, exist_ok=True)
+    results = [analyse(c) for c in cases]
+    diameters = sorted({r[0]["diameter"] for r in results})
+    if len(diameters) != 1:
+        raise SystemExit("postProcess: one bead diameter per results directory")
+    d = diameters[0]
+    write_profiles(os.path.join(out, "profiles.csv"), results)
+    write_summary(os.path.join(out, "summary.csv"), results)
+    plot_concentration(os.path.join(out, "concentration.png"), results, d)
+    plot_velocity(os.path.join(out, "velocity.png"), results, d,
+                  carrier_profile(results[0][0]))
+    plot_wall_hits(os.path.join(out, "wallHits.png"), results, d)
+    plot_spin_up(os.path.join(out, "spinUp.png"), results, d)
+    write_carrier(os.path.join(out, "carrier.csv"), carrier_statistics(results[0][0]))
+    print_summary(results)
+
+
+if __name__ == "__main__":
+    main()
