@@ -138,10 +138,15 @@ Foam::roughWallPatchList::readEntries(const dictionary& coeffs)
         }
         is.putBack(blockToken);
 
-        // Named after the entry, so that messages point at it
+        // Named after the entry, so that messages point at it (scopes are
+        // joined by '.' on v1912, by '/' on the Foundation releases)
         const dictionary entryDict
         (
-            fileName("patches." + patchName),
+            fileName
+            (
+                string("patches") + (roughWallCompat::esi ? "." : "/")
+              + patchName
+            ),
             coeffs,
             is
         );
