@@ -45,6 +45,7 @@ N_GROUPS = 20
 MIN_SAMPLES = 10        # velocity statistics of a bin need this many samples
 WALLS = tc.WALLS
 EPS_TIME = 1e-9
+MARKERS = ("s", "o", "^", "v", "D", "P")
 
 
 # ----------------------------------------------------------------------------
@@ -282,11 +283,20 @@ def title(d):
 
 def plot_concentration(path, results, d):
     fig, ax = plt.subplots(figsize=(5.8, 5.4))
-    for info, prof, s, _ in results:
+    floor = []
+    for k, (info, prof, s, _) in enumerate(results):
         c, se, y = prof["concentration"], prof["concentration_se"], prof["y_over_H"]
         ok = c > 0
-        ax.errorbar(c[ok], y[ok], xerr=se[ok], marker="o", ms=3.5, capsize=2, lw=1.2,
-                    label="%s: %.1f %% in upper half" % (label(info), 100*s["upperFraction"]))
+        ax.errorbar(c[ok], y[ok], xerr=se[ok], marker=MARKERS[k % len(MARKERS)],
+                    ms=3.5 + 2.5*(k == 0), mfc="none" if k == 0 else None, capsize=2,
+                    lw=1.2, label="%s: %.1f %% in upper half"
+                    % (label(info), 100*s["upperFraction"]))
+        if ok.sum() <= 2:
+            floor.append((c[ok][0], y[ok][0]))
+    if floor:
+        ax.annotate("on the smooth floors every bead\nslides in the lowest bin",
+                    floor[0], xytext=(-20, 60), textcoords="offset points",
+                    ha="right", fontsize=7.5, arrowprops=dict(arrowstyle="->", lw=0.8))
     ax.set_xscale("log")
     ax.axvline(1, color="0.6", lw=0.8, ls=":")
     ax.axhline(0.5, color="0.6", lw=0.8, ls=":")

@@ -115,6 +115,12 @@ def table(head, rows):
 # ----------------------------------------------------------------------------
 # The generated blocks
 
+def relative_command(command):
+    """The command of runInfo from the repository root"""
+    i = command.find("tutorials/")
+    return command[i:] if i >= 0 else command
+
+
 def provenance(r):
     i = r.info
     v0 = r.variants[0]
@@ -123,7 +129,7 @@ def provenance(r):
             "(%d snapshots, %d samples per variant), time step %g ms. Files: "
             "`results/summary.csv`, `results/profiles.csv`, "
             "`results/carrier.csv`, `results/runInfo`." % (
-                i["command"].replace(os.path.dirname(TUTORIAL), "tutorials"),
+                relative_command(i["command"]),
                 i["commit"], i["date"], i["openfoam"], i["machine"], i["jobs"],
                 r.s(v0, "nParcels"), 1e6*r.s(v0, "diameter"),
                 r.s(v0, "sampleStart"), r.s(v0, "sampleEnd"),
@@ -175,14 +181,6 @@ def results_table(r):
         "the sampling window.)")
 
 
-def drift_text(r, v):
-    d = r.s(v, "upperFractionLate") - r.s(v, "upperFractionEarly")
-    se = math.hypot(r.s(v, "upperFractionLate_se"), r.s(v, "upperFractionEarly_se"))
-    du = r.s(v, "UyRmsLate") - r.s(v, "UyRmsEarly")
-    seu = math.hypot(r.s(v, "UyRmsLate_se"), r.s(v, "UyRmsEarly_se"))
-    return d, se, du, seu
-
-
 def observations(r):
     out = []
     flat = [v for v in r.variants if r.s(v, "upperFraction") < 0.01]
@@ -227,17 +225,32 @@ def observations(r):
             "mean facet tilt of the hits on the lower wall is positive (%s "
             "deg): the shadow effect." % (
                 ", ".join("%.2f" % r.s(v, "kn_lowerWall") for v in rough), gammas))
-    drifts = []
-    for v in r.variants:
-        d, se, du, seu = drift_text(r, v)
-        drifts.append((v, d, se, du, seu))
-    worst = max(abs(d)/se if se > 0 else 0 for _, d, se, _, _ in drifts)
-    worstu = max(abs(du)/seu if seu > 0 else 0 for _, _, _, du, seu in drifts)
-    out.append(
-        "- Steady state: the difference between the second and the first "
-        "half of the sampling window is at most %.1f standard errors for the "
-        "upper-half fraction and %.1f for the rms wall-normal velocity, over "
-        "all variants (the spin-up figure shows the approach)." % (worst, worstu))
+    suspended = [v for v in r.variants if v not in flat]
+
+    def worst(vs, key):
+        z = [0.0]
+        for v in vs:
+            d = r.s(v, key + "Late") - r.s(v, key + "Early")
+            se = math.hypot(r.s(v, key + "Late_se"), r.s(v, key + "Early_se"))
+            z.append(abs(d)/se if se > 0 else 0.0)
+        return max(z)
+    if suspended:
+        out.append(
+            "- Steady state: for %s the difference between the second and "
+            "the first half of the sampling window is at most %.1f standard "
+            "errors for the upper-half fraction and %.1f for the rms "
+            "wall-normal velocity (the spin-up figure shows the approach)."
+            % (", ".join("`%s`" % v for v in suspended),
+               worst(suspended, "upperFraction"), worst(suspended, "UyRms")))
+    if flat:
+        out.append(
+            "- The beads on the smooth floors (%s) are still settling into "
+            "sliding: their rms wall-normal velocity changed by %s m/s between "
+            "the two halves of the sampling window (negligible, but many "
+            "standard errors, since they hardly scatter)." % (
+                ", ".join("`%s`" % v for v in flat),
+                " and ".join("%.1e" % (r.s(v, "UyRmsLate") - r.s(v, "UyRmsEarly"))
+                             for v in flat)))
     return "\n".join(out)
 
 
@@ -253,27 +266,32 @@ def trends(r):
         return " -> ".join(fmt % (scale*r.s(v, key)) for v in seq)
     label = "Delta = " + " -> ".join("%g" % r.s(v, "roughnessAngle")
                                      for v in seq) + " deg"
+    def agree(key, rising):
+        def ordered(vs):
+            x = [r.s(v, key) for v in vs]
+            return all((b > a) if rising else (b < a) for a, b in zip(x, x[1:]))
+        if ordered(seq):
+            return "yes"
+        if ordered(rough):
+            return ("between the rough walls; the smooth-wall beads slide on "
+                    "the floor, not conveyed in suspension")
+        return "no"
     rows = [
         ["gravitational settling is counteracted by roughness: the "
          "concentration profile becomes more uniform",
          "parcels in the upper half: " + series("upperFraction", "%.1f %%", 100),
-         "same direction"],
+         agree("upperFraction", True)],
         ["the wall-normal particle velocity fluctuation grows with roughness",
          "rms wall-normal parcel velocity [m/s]: " + series("UyRms", "%.3f"),
-         "same direction"],
+         agree("UyRms", True)],
         ["the mean particle velocity falls with roughness (momentum lost in "
          "more frequent, more oblique wall collisions)",
          "mean streamwise parcel velocity [m/s]: " + series("meanUx", "%.2f"),
-         "same direction" if all(
-             r.s(a, "meanUx") >= r.s(b, "meanUx") for a, b in zip(rough, rough[1:]))
-         else "not monotonic"],
+         agree("meanUx", False)],
         ["the wall collision frequency grows with roughness",
          "lower-wall impacts per parcel per metre: "
          + series("impactsPerParcelPerMetre_lowerWall", "%.3f"),
-         "same direction" if all(
-             r.s(a, "impactsPerParcelPerMetre_lowerWall")
-             <= r.s(b, "impactsPerParcelPerMetre_lowerWall")
-             for a, b in zip(seq, seq[1:])) else "not monotonic"],
+         agree("impactsPerParcelPerMetre_lowerWall", True)],
     ]
     return ("Tutorial: " + label + ".\n\n"
             + table(["trend (Kussin & Sommerfeld 2002; see the text for what "
