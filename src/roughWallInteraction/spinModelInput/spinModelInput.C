@@ -1,0 +1,212 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | roughWallInteraction: rough-wall particle
+   \\    /   O peration     | collisions for OpenFOAM's Lagrangian clouds
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 The roughWallInteraction authors
+-------------------------------------------------------------------------------
+License
+    This file is part of roughWallInteraction.
+
+    roughWallInteraction is free software: you can redistribute it and/or
+    modify it under the terms of the GNU General Public License as published
+    by the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    roughWallInteraction is distributed in the hope that it will be useful,
+    but WITHOUT ANY WARRANTY; without even the implied warranty of
+    MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General
+    Public License for more details.
+
+    You should have received a copy of the GNU General Public License along
+    with roughWallInteraction.  If not, see <http://www.gnu.org/licenses/>.
+
+    SPDX-License-Identifier: GPL-3.0-or-later
+
+\*---------------------------------------------------------------------------*/
+
+#include "spinModelInput.H"
+#include "roughWallInput.H"
+#include "foamCompat.H"
+#include "OStringStream.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The word of keyword: one of names (index returned), deflt if absent
+Foam::label readChoice
+(
+    const Foam::dictionary& dict,
+    const Foam::word& keyword,
+    const Foam::wordList& names,
+    const Foam::label deflt,
+    const char* meaning
+)
+{
+    using namespace Foam;
+
+    const entry* eptr = roughWallCompat::findLiteral(dict, keyword);
+
+    if (!eptr)
+    {
+        return deflt;
+    }
+
+    string allowed = "one of";
+    for (const word& n : names)
+    {
+        allowed += " " + n;
+    }
+
+    if (!eptr->isDict())
+    {
+        const ITstream& is = eptr->stream();
+        if (is.size() == 1 && is[0].isWord())
+        {
+            forAll(names, i)
+            {
+                if (is[0].wordToken() == names[i])
+                {
+                    return i;
+                }
+            }
+        }
+    }
+
+    roughWallInput::fatalBadEntry
+    (
+        dict, keyword, allowed, meaning,
+        "'" + roughWallInput::entryText(dict, keyword) + "'"
+    );
+}
+
+//- Names of the coefficients, in the order of the core's enumerations
+const Foam::wordList liftNames{"RubinowKeller", "OesterleBuiDinh"};
+const Foam::wordList torqueNames{"Stokes", "DennisSinghIngham"};
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+roughWall::spin::LiftCoefficient Foam::spinModelInput::readLiftCoefficient
+(
+    const dictionary& dict
+)
+{
+    using roughWall::spin::LiftCoefficient;
+
+    const label i = readChoice
+    (
+        dict, "coefficient", liftNames,
+        label(LiftCoefficient::OesterleBuiDinh),
+        "rotational lift coefficient C_LR: OesterleBuiDinh (Oesterle & "
+        "Bui Dinh 1998) or RubinowKeller (Rubinow & Keller 1961, Re_p << 1)"
+        " (default: OesterleBuiDinh)"
+    );
+
+    return LiftCoefficient(i);
+}
+
+
+roughWall::spin::TorqueCoefficient
+Foam::spinModelInput::readTorqueCoefficient
+(
+    const dictionary& dict
+)
+{
+    using roughWall::spin::TorqueCoefficient;
+
+    const label i = readChoice
+    (
+        dict, "coefficient", torqueNames,
+        label(TorqueCoefficient::DennisSinghIngham),
+        "rotational drag coefficient C_R: DennisSinghIngham (Dennis, Singh "
+        "& Ingham 1980) or Stokes (64 pi/Re_R at every Re_R) (default: "
+        "DennisSinghIngham)"
+    );
+
+    return TorqueCoefficient(i);
+}
+
+
+Foam::word Foam::spinModelInput::name
+(
+    const roughWall::spin::LiftCoefficient c
+)
+{
+    return liftNames[label(c)];
+}
+
+
+Foam::word Foam::spinModelInput::name
+(
+    const roughWall::spin::TorqueCoefficient c
+)
+{
+    return torqueNames[label(c)];
+}
+
+
+void Foam::spinModelInput::checkKeywords
+(
+    const dictionary& dict,
+    const word& model,
+    const wordList& used
+)
+{
+    for (const entry& e : dict)
+    {
+        bool found = false;
+        for (const word& w : used)
+        {
+            found = found || e.keyword() == w;
+        }
+        if (!found)
+        {
+            OStringStream allowed;
+            allowed << "keywords of " << model.c_str() << ":";
+            for (const word& w : used)
+            {
+                allowed << " " << w.c_str();
+            }
+            roughWallInput::fatalBadEntry
+            (
+                dict, e.keyword(), allowed.str(),
+                "not a keyword of this model",
+                "'" + roughWallInput::entryText(dict, e.keyword()) + "'"
+            );
+        }
+    }
+}
+
+
+void Foam::spinModelInput::fatalNoSpin
+(
+    const dictionary& dict,
+    const word& model,
+    const word& cloudName,
+    const string& cloudType
+)
+{
+    FatalIOErrorInFunction(dict)
+        << model.c_str() << " acts on the spin of the parcels, but the parcels"
+        << " of cloud " << cloudName.c_str() << " (type "
+        << cloudType.c_str() << ") carry no spin." << nl
+        << "    Select " << model.c_str() << " in a cloud whose parcels carry"
+        << " spin: type collidingCloud (OpenFOAM-11, -12, -13) or"
+        << " basicKinematicCollidingCloud (v1912:"
+        << " icoUncoupledKinematicParcelFoam, DPMFoam)," << nl
+        << "    or remove it from " << dict.name().c_str()
+        << exit(FatalIOError);
+
+    // exit() does not return; keep [[noreturn]] honest for the compiler
+    std::abort();
+}
+
+
+// ************************************************************************* //
