@@ -31,10 +31,13 @@ MARGIN_SE = 3.0
 ORDER = ("smooth", "rough2.5", "rough5")
 #: The statistics that must order the variants (summary.csv columns)
 ORDERED = ("upperFraction", "UyRms")
-#: Band of the agreement with the reference: statistic -> (number of combined
-#: standard errors, absolute allowance)
+#: Band of the agreement with the reference: BAND_SE combined standard
+#: errors plus an absolute allowance per statistic for the short run's
+#: shorter spin-up (0.5 s against 1.5 s: the spin, and with it the rms
+#: wall-normal velocity, has not settled; measured 0.002 and 0.019 m/s at
+#: most when the allowances were set)
 BAND_SE = 4.0
-BAND = {"upperFraction": 0.03, "UyRms": 0.03}
+BAND = {"upperFraction": 0.01, "UyRms": 0.03}
 FIGURES = ("concentration.png", "velocity.png", "wallHits.png", "spinUp.png")
 
 failures = []

@@ -327,8 +327,8 @@ def smoke_test(r):
     rows = [[x["check"], x["value"], x["limit"], x["margin"]] for x in r.smoke]
     return (text + "\n\nThe last recorded smoke test (`results/smokeTest.csv`, "
             "%s):\n\n" % r.smoke[0]["run"]
-            + table(["check", "measured", "required", "margin (measured / "
-                     "required)"], rows))
+            + table(["check", "measured", "required", "measured / required "
+                     "(orderings: above 1; bands: below 1)"], rows))
 
 
 BLOCKS = {
