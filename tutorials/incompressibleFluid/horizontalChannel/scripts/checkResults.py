@@ -85,7 +85,7 @@ def sanity(out):
     profiles = read_csv(os.path.join(out, "profiles.csv"))
     finite_numbers(profiles, "profiles.csv", {"variant"})
     summary = read_csv(os.path.join(out, "summary.csv"))
-    finite_numbers(summary, "summary.csv", {"variant", "wallModel"})
+    finite_numbers(summary, "summary.csv", {"variant", "wallModel", "spinCoupling"})
     bins = defaultdict(list)
     for row in profiles:
         bins[row["variant"]].append(row)

@@ -230,7 +230,8 @@ PROFILE_COLUMNS = ["y_over_H", "concentration", "concentration_se",
                    "Ux_rms", "Ux_rms_se", "Uy_rms", "Uy_rms_se", "samples"]
 
 SUMMARY_COLUMNS = [
-    "variant", "wallModel", "roughnessAngle", "diameter", "nParcels", "deltaT",
+    "variant", "wallModel", "roughnessAngle", "spinCoupling", "diameter", "nParcels",
+    "deltaT",
     "sampleStart", "sampleEnd", "snapshots", "samples",
     "upperFraction", "upperFraction_se", "upperFractionEarly", "upperFractionEarly_se",
     "upperFractionLate", "upperFractionLate_se", "UyRms", "UyRms_se",
@@ -271,9 +272,10 @@ def write_summary(path, results):
 
 def label(info):
     if info.get("wallModel") == "roughWallInteraction":
+        spin = "" if info.get("spinCoupling") == "yes" else ", no spin forces"
         if info.get("roughnessAngle", 0) == 0:
-            return "rough-wall model, $\\Delta$ = 0 (smooth)"
-        return "rough-wall model, $\\Delta$ = %g$^\\circ$" % info["roughnessAngle"]
+            return "rough-wall model, $\\Delta$ = 0 (smooth)" + spin
+        return "rough-wall model, $\\Delta$ = %g$^\\circ$%s" % (info["roughnessAngle"], spin)
     return "standardWallInteraction"
 
 
@@ -443,7 +445,7 @@ def write_carrier(path, stats):
 def print_summary(results):
     print("\nhorizontalChannel: statistics over the sampling window (standard errors in "
           "brackets)")
-    head = ("%-13s %8s %15s %13s %15s %14s %7s %7s %10s %10s %6s %6s %8s"
+    head = ("%-19s %8s %15s %13s %15s %14s %7s %7s %10s %10s %6s %6s %8s"
             % ("variant", "samples", "upper half [%]", "drift [%]", "rms V_p [m/s]",
                "<y>/H", "<Up>", "<spin>", "hits/m low", "hits/m up", "k_n", "k_t",
                "wall [s]"))
@@ -452,7 +454,7 @@ def print_summary(results):
     for info, prof, s, _ in results:
         drift = s["upperFractionLate"] - s["upperFractionEarly"]
         drift_se = np.hypot(s["upperFractionLate_se"], s["upperFractionEarly_se"])
-        print("%-13s %8d %7.2f (%4.2f) %6.2f (%4.2f) %7.4f (%5.4f) %6.3f (%5.3f) %7.2f "
+        print("%-19s %8d %7.2f (%4.2f) %6.2f (%4.2f) %7.4f (%5.4f) %6.3f (%5.3f) %7.2f "
               "%7.2f %10.3g %10.3g %6.3g %6.3g %8.1f" % (
                   info["variant"], s["samples"],
                   100*s["upperFraction"], 100*s["upperFraction_se"], 100*drift,

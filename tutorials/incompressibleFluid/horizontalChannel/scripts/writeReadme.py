@@ -75,12 +75,24 @@ class Results:
     def s(self, variant, key):
         return number(self.summary[variant], key)
 
-    def rough(self):
-        """The rough-wall model's variants with Delta > 0, by Delta."""
+    def spin(self, variant):
+        return self.summary[variant].get("spinCoupling") == "yes"
+
+    def model(self, spin=True):
+        """The rough-wall model's variants (with or without the spin
+        forces), by Delta"""
         v = [x for x in self.variants
              if self.summary[x]["wallModel"] == "roughWallInteraction"
-             and self.s(x, "roughnessAngle") > 0]
+             and self.spin(x) == spin]
         return sorted(v, key=lambda x: self.s(x, "roughnessAngle"))
+
+    def rough(self):
+        """The rough-wall model's variants with Delta > 0 and the spin
+        forces, by Delta."""
+        return [x for x in self.model() if self.s(x, "roughnessAngle") > 0]
+
+    def smooth(self):
+        return [x for x in self.model() if self.s(x, "roughnessAngle") == 0]
 
 
 # ----------------------------------------------------------------------------
@@ -102,6 +114,8 @@ def name(r, v):
         return "`%s`: standardWallInteraction, e = 0.8, mu = 0" % v
     delta = r.s(v, "roughnessAngle")
     extra = " (smooth)" if delta == 0 else ""
+    if not r.spin(v):
+        extra += ", no spin forces"
     return "`%s`: rough-wall model, Delta = %g deg%s" % (v, delta, extra)
 
 
@@ -188,9 +202,9 @@ def observations(r):
         out.append(
             "- %s: %s of the parcels in the upper half, rms wall-normal "
             "velocity %s m/s: the beads slide along the floor at %s m/s, "
-            "about the air velocity at one radius (%.2f m/s). Drag, "
-            "Saffman-Mei lift and the random walk do not lift a sliding bead "
-            "off a smooth floor." % (
+            "about the air velocity at one radius (%.2f m/s). Drag, the "
+            "lift forces and the random walk do not lift a sliding bead off a "
+            "smooth floor." % (
                 " and ".join("`%s`" % v for v in flat),
                 " and ".join(pct(r.s(v, "upperFraction"), digits=2) for v in flat),
                 " and ".join("%.4f" % r.s(v, "UyRms") for v in flat),
@@ -256,9 +270,7 @@ def observations(r):
 
 def trends(r):
     rough = r.rough()
-    smooth = [v for v in r.variants if r.summary[v]["wallModel"] ==
-              "roughWallInteraction" and r.s(v, "roughnessAngle") == 0]
-    seq = smooth + rough
+    seq = r.smooth() + rough
     if not seq:
         return ""
 
@@ -331,12 +343,41 @@ def smoke_test(r):
                      "(orderings: above 1; bands: below 1)"], rows))
 
 
+def spin_effect(r):
+    """Each variant without the spin forces against the same variant with
+    them"""
+    rows = []
+    for v in r.model(spin=False):
+        ref = v.split(".")[0]
+        if ref not in r.summary:
+            continue
+        for key, text, fmt, scale in (
+                ("upperFraction", "parcels in the upper half", "%.2f %%", 100),
+                ("UyRms", "rms wall-normal parcel velocity [m/s]", "%.4f", 1),
+                ("meanUx", "mean streamwise parcel velocity [m/s]", "%.2f", 1),
+                ("meanSpinSpeed", "mean spin omega d/2 [m/s]", "%.2f", 1),
+                ("impactsPerParcelPerMetre_lowerWall",
+                 "lower-wall impacts per parcel per metre", "%.3f", 1)):
+            a, b = r.s(ref, key), r.s(v, key)
+            se_a, se_b = r.s(ref, key + "_se"), r.s(v, key + "_se")
+            z = abs(a - b)/math.hypot(se_a, se_b) \
+                if math.isfinite(se_a) and math.isfinite(se_b) and (se_a or se_b) \
+                else math.nan
+            rows.append(["`%s` / `%s`" % (ref, v), text, fmt % (scale*a),
+                         fmt % (scale*b), "%.0f" % z if math.isfinite(z) else "-"])
+    if not rows:
+        return "(no variant without the spin forces in this run)"
+    return table(["variants", "statistic", "with the spin forces",
+                  "without", "difference / combined s.e."], rows)
+
+
 BLOCKS = {
     "provenance": provenance,
     "carrier": carrier,
     "results": results_table,
     "observations": observations,
     "trends": trends,
+    "spinEffect": spin_effect,
     "runtimes": runtimes,
     "smokeTest": smoke_test,
 }
