@@ -201,10 +201,10 @@ def observations(r):
     if flat:
         out.append(
             "- %s: %s of the parcels in the upper half, rms wall-normal "
-            "velocity %s m/s: the beads slide along the floor at %s m/s, "
-            "about the air velocity at one radius (%.2f m/s). Drag, the "
-            "lift forces and the random walk do not lift a sliding bead off a "
-            "smooth floor." % (
+            "velocity %s m/s: the beads move along the floor at %s m/s (the "
+            "air at one radius from the wall: %.2f m/s). Drag, the lift "
+            "forces and the random walk do not lift a bead off a smooth "
+            "floor once it has settled." % (
                 " and ".join("`%s`" % v for v in flat),
                 " and ".join(pct(r.s(v, "upperFraction"), digits=2) for v in flat),
                 " and ".join("%.4f" % r.s(v, "UyRms") for v in flat),
@@ -226,11 +226,9 @@ def observations(r):
                 "; ".join(prof)))
         out.append(
             "- The rms wall-normal parcel velocity grows with Delta (%s m/s), "
-            "paid for by the mean streamwise velocity (%s m/s) and the spin "
-            "(%s m/s surface speed)." % (
+            "paid for by the mean streamwise velocity (%s m/s)." % (
                 ", ".join("%.3f" % r.s(v, "UyRms") for v in rough),
-                ", ".join("%.2f" % r.s(v, "meanUx") for v in rough),
-                ", ".join("%.2f" % r.s(v, "meanSpinSpeed") for v in rough)))
+                ", ".join("%.2f" % r.s(v, "meanUx") for v in rough)))
         gammas = ", ".join("%.2f" % r.s(v, "gammaDeg_lowerWall") for v in rough)
         out.append(
             "- Mean k_n per hit is above 1 (%s on the lower wall): a grazing "
@@ -318,10 +316,11 @@ def runtimes(r):
     cpu = sum(r.s(v, "cpuTime") for v in r.variants)
     return (table(["variant", "wall clock [s]", "CPU (ExecutionTime) [s]"], rows)
             + "\n\nWhole `./Allrun`: %s s wall clock on the machine of the "
-            "results (%s, %s at a time); the tracking runs took %.0f s of CPU "
-            "time in all, the carrier flow %.0f s."
+            "results, shared with other jobs (%s, %s at a time); the tracking "
+            "runs took %.0f s of CPU time in all (%.0f s on each of two idle "
+            "cores), the carrier flow %.0f s."
             % (r.info["totalSeconds"], r.info["machine"], r.info["jobs"], cpu,
-               float(r.info["carrierSeconds"])))
+               cpu/2, float(r.info["carrierSeconds"])))
 
 
 def smoke_test(r):
