@@ -85,6 +85,97 @@ inline bool acceptOneMinusExp(double y, double U)
 template<class Uniform01>
 double sampleFacetAngleByInversion(double alpha, double Delta, Uniform01& uniform01);
 
+namespace detail
+{
+
+//- gamma ~ P(gamma, alpha) by plain rejection (h = alpha/Delta >= 1), from
+//  attempt firstAttempt on; the inversion fallback after the last
+template<class Uniform01>
+#if defined(__GNUC__)
+[[gnu::noinline]]
+#endif
+double sampleFacetAnglePlain
+(
+    double h,
+    double alpha,
+    double Delta,
+    Uniform01& uniform01,
+    int firstAttempt
+)
+{
+    for (int i = firstAttempt; i < maxRejectionAttempts; ++i)
+    {
+        const double Z = standardNormal(uniform01);
+        const double x = h + Z;
+        const double gamma = Delta*Z;
+        // (gamma > -alpha is x > 0 but for the rounding of tiny Delta)
+        if (x > 0 && gamma > -alpha && acceptOneMinusExp(2*x*h, uniform01()))
+        {
+            return gamma;
+        }
+    }
+    return sampleFacetAngleByInversion(alpha, Delta, uniform01);
+}
+
+//- gamma ~ P(gamma, alpha) by the mixture (h = alpha/Delta < 1); the
+//  inversion fallback after the last attempt
+template<class Uniform01>
+#if defined(__GNUC__)
+[[gnu::noinline]]
+#endif
+double sampleFacetAngleMixture
+(
+    double h,
+    double alpha,
+    double Delta,
+    Uniform01& uniform01
+)
+{
+    for (int i = 0; i < maxRejectionAttempts; ++i)
+    {
+        const double s = h*uniform01();
+        const double twoE = twoExponential(uniform01);
+        if (twoE >= s*s)
+        {
+            // R >= s, also where s*s underflows (alpha < 1e-154 Delta):
+            // else gamma = -2 Delta s could pass -alpha
+            const double R = std::max(s, std::sqrt(twoE));
+            return Delta*(R - 2*s);
+        }
+    }
+    return sampleFacetAngleByInversion(alpha, Delta, uniform01);
+}
+
+//- sampleFacetAngle given h = alpha/Delta (Delta > 0), computed by the
+//  caller (the operator multiplies by 1/Delta, known before alpha). The
+//  first attempt of plain rejection, accepted without the exponential in
+//  most draws, is inline; the rest of plain rejection and the mixture are
+//  out of line (the same draws in the same order either way)
+template<class Uniform01>
+inline double sampleFacetAngleGivenH
+(
+    double h,
+    double alpha,
+    double Delta,
+    Uniform01& uniform01
+)
+{
+    if (!(h >= 1))
+    {
+        return sampleFacetAngleMixture(h, alpha, Delta, uniform01);
+    }
+    const double Z = standardNormal(uniform01);
+    const double x = h + Z;
+    const double gamma = Delta*Z;
+    if (x > 0 && gamma > -alpha && acceptOneMinusExp(2*x*h, uniform01()))
+    {
+        return gamma;
+    }
+    return sampleFacetAnglePlain(h, alpha, Delta, uniform01, 1);
+}
+
+} // namespace detail
+
 //- Exact sample of gamma ~ P(gamma, alpha) [rad]. Delta = 0 gives 0.
 template<class Uniform01>
 double sampleFacetAngle(double alpha, double Delta, Uniform01& uniform01)
@@ -93,41 +184,7 @@ double sampleFacetAngle(double alpha, double Delta, Uniform01& uniform01)
     {
         return 0;
     }
-    const double h = alpha/Delta;
-    if (h >= 1)
-    {
-        for (int i = 0; i < detail::maxRejectionAttempts; ++i)
-        {
-            const double Z = standardNormal(uniform01);
-            const double x = h + Z;
-            const double gamma = Delta*Z;
-            // (gamma > -alpha is x > 0 but for the rounding of tiny Delta)
-            if
-            (
-                x > 0 && gamma > -alpha
-             && detail::acceptOneMinusExp(2*x*h, uniform01())
-            )
-            {
-                return gamma;
-            }
-        }
-    }
-    else
-    {
-        for (int i = 0; i < detail::maxRejectionAttempts; ++i)
-        {
-            const double s = h*uniform01();
-            const double twoE = detail::twoExponential(uniform01);
-            if (twoE >= s*s)
-            {
-                // R >= s, also where s*s underflows (alpha < 1e-154 Delta):
-                // else gamma = -2 Delta s could pass -alpha
-                const double R = std::max(s, std::sqrt(twoE));
-                return Delta*(R - 2*s);
-            }
-        }
-    }
-    return sampleFacetAngleByInversion(alpha, Delta, uniform01);
+    return detail::sampleFacetAngleGivenH(alpha/Delta, alpha, Delta, uniform01);
 }
 
 //- Sample of gamma ~ P(gamma, alpha) by inversion of the CDF: a monotone map

@@ -166,6 +166,27 @@ inline void sinCosHalfPi(double x, double& s, double& c)
     c = -sign*kernelSin(r);
 }
 
+//- sin and cos of x, |x| <= pi/2, with one polynomial: the smaller of the
+//  two in magnitude by fdlibm's sine kernel (of x, or of x -+ pi/2), the
+//  larger, >= sqrt(1/2), as sqrt(1 - smaller^2), which has no cancellation.
+//  s^2 + c^2 = 1 to rounding; each within 2 ulp
+inline void sinCosHalfPiSqrt(double x, double& s, double& c)
+{
+    using namespace detail;
+    if (std::abs(x) <= pio4Hi)
+    {
+        s = kernelSin(x);
+        c = std::sqrt(1 - s*s);
+        return;
+    }
+    constexpr double pio2_1 = 1.57079632673412561417e+00;   // 33 bits
+    constexpr double pio2_1t = 6.07710050650619224932e-11;  // pi/2 - pio2_1
+    const double sign = x > 0 ? 1.0 : -1.0;
+    const double r = (x - sign*pio2_1) - sign*pio2_1t;
+    c = -sign*kernelSin(r);
+    s = sign*std::sqrt(1 - c*c);
+}
+
 //- log(1 - u) for u in [0, 1), as accurate as log1p(-u): v = 1 - u rounded,
 //  c = (1 - u) - v exactly, log(1 - u) = log(v) + c/v
 inline double log1pMinus(double u)

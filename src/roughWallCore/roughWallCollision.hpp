@@ -66,20 +66,42 @@ namespace detail
 //- Largest facet tilt: beyond the vertical a facet is an overhang
 constexpr double maxFacetTilt = 0.5*pi;
 
+//- Smallest roughness angle whose reciprocal is used (1/Delta <= 1e300):
+//  below it h = alpha/Delta is divided out
+constexpr double minReciprocalDelta = 1e-300;
+
 //- Draw gamma ~ P(gamma, alpha) restricted to gamma < pi/2 (each draw is
-//  accepted with probability >= 0.86 for Delta <= 45 deg)
+//  accepted with probability >= 0.86 for Delta <= 45 deg). Delta > 0;
+//  invDelta = 1/Delta if Delta >= minReciprocalDelta, else 0: h = alpha/Delta
+//  as a product, which, unlike the division, does not hold up the sampler
+//  once alpha is known
 template<class Uniform01>
-double sampleFacetTilt(double alpha, double Delta, Uniform01& uniform01)
+double sampleFacetTilt
+(
+    double alpha,
+    double Delta,
+    double invDelta,
+    Uniform01& uniform01
+)
 {
+    const double h = invDelta > 0 ? alpha*invDelta : alpha/Delta;
     for (int i = 0; i < maxRejectionAttempts; ++i)
     {
-        const double gamma = sampleFacetAngle(alpha, Delta, uniform01);
+        const double gamma =
+            sampleFacetAngleGivenH(h, alpha, Delta, uniform01);
         if (gamma < maxFacetTilt)
         {
             return gamma;
         }
     }
     return 0;   // probability < 1e-80: a facet parallel to the mean wall
+}
+
+//- The same for any Delta >= 0 (Delta = 0 gives 0), h by division
+template<class Uniform01>
+double sampleFacetTilt(double alpha, double Delta, Uniform01& uniform01)
+{
+    return Delta > 0 ? sampleFacetTilt(alpha, Delta, 0.0, uniform01) : 0;
 }
 
 //- N(0, Delta) lateral tilt with |delta| < pi/2
@@ -154,8 +176,13 @@ IncidenceFrame incidenceFrame
     const double length2 = tangential.squaredNorm();
     if (length2 > 0.25*firstLength2 && length2 > 0)
     {
-        const double length = std::sqrt(length2);
-        return {tangential*(1/length), fastMath::atan2FirstQuadrant(approach, length)};
+        // The angle from the first projection's length: the second one
+        // changes it by (t.N)^2, O(ulp^2) of |v|^2, which moves alpha by
+        // O(ulp) at most; so alpha, which the sampler waits for, does not
+        // wait for the second projection
+        const double alpha =
+            fastMath::atan2FirstQuadrant(approach, std::sqrt(firstLength2));
+        return {tangential*(1/std::sqrt(length2)), alpha};
     }
     return
     {
@@ -232,6 +259,8 @@ RoughWallReport collideWithRoughWall
         return report;
     }
 
+    const double invDelta = Delta >= detail::minReciprocalDelta ? 1/Delta : 0;
+
     for (int draw = 0; velocity.dot(wallNormal) < 0; ++draw)
     {
         if (draw >= p.maxFacetCollisions)
@@ -256,9 +285,10 @@ RoughWallReport collideWithRoughWall
             direction, wallNormal, emptyDirection, twoD, uniform01
         );
 
-        const double gamma = detail::sampleFacetTilt(frame.alpha, Delta, uniform01);
+        const double gamma =
+            detail::sampleFacetTilt(frame.alpha, Delta, invDelta, uniform01);
         double sinGamma, cosGamma;
-        fastMath::sinCosHalfPi(gamma, sinGamma, cosGamma);
+        fastMath::sinCosHalfPiSqrt(gamma, sinGamma, cosGamma);
         Vec3 n = cosGamma*wallNormal - sinGamma*frame.tangent;
         if (lateral)
         {
