@@ -42,12 +42,6 @@ namespace Foam
 namespace roughWallAdapter
 {
 
-//- OpenFOAM vector to the core's vector
-inline roughWall::Vec3 toCore(const vector& v)
-{
-    return roughWall::Vec3(v.x(), v.y(), v.z());
-}
-
 //- The core's vector to an OpenFOAM vector
 inline vector toFoam(const roughWall::Vec3& v)
 {
@@ -129,27 +123,33 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
     const roughWallPatchData& data
 )
 {
-    using roughWallAdapter::toCore;
-    using roughWallAdapter::toFoam;
+    using roughWall::Vec3;
 
     vector nw;
     vector Up;
     this->owner().patchData(p, pp, nw, Up);
 
-    // The core's wall normal points into the fluid, OpenFOAM's out of it
-    vector n = -nw;
-    vector U0 = p.U() - Up;
+    // From here on the core's vectors, relative to the wall. The core's wall
+    // normal points into the fluid, OpenFOAM's out of it
+    Vec3 n(-nw.x(), -nw.y(), -nw.z());
+    const vector& U = p.U();
+    Vec3 v(U.x() - Up.x(), U.y() - Up.y(), U.z() - Up.z());
 
-    const bool twoD = patches_.emptyComponent() >= 0;
-
-    if (twoD)
+    // 2-D: the projection onto the solution plane, once. With the empty
+    // components of n, v and (below) the spin exactly zero the core keeps
+    // them zero: its facet normals, impulses and spin changes have no
+    // empty component, so the rebound needs no projection
+    const label emptyCmpt = patches_.emptyComponent();
+    Vec3 emptyDirection(Vec3::Zero());
+    if (emptyCmpt >= 0)
     {
-        constrainToPlane(n);
-        n /= mag(n);
-        constrainToPlane(U0);
+        n[emptyCmpt] = 0;
+        n /= n.norm();
+        v[emptyCmpt] = 0;
+        emptyDirection[emptyCmpt] = 1;
     }
 
-    const scalar Un0 = U0 & n;
+    const scalar Un0 = v.dot(n);
 
     // Only parcels moving into the wall are changed
     if (!(Un0 < 0))
@@ -157,8 +157,8 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
         return;
     }
 
-    roughWall::Vec3 v(toCore(U0));
-    roughWall::Vec3 omega(roughWall::Vec3::Zero());
+    const Vec3 v0(v);
+    Vec3 omega(Vec3::Zero());
     scalar I = 0;
 
     if constexpr (withSpin)
@@ -166,19 +166,21 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
         I = p.momentOfInertia();
         if (I > 0)
         {
-            vector omega0(p.angularMomentum()/I);
-            constrainSpinToPlane(omega0);
-            omega = toCore(omega0);
+            // 2-D: only spin about the empty direction keeps the motion in
+            // the plane
+            const vector& L = p.angularMomentum();
+            if (emptyCmpt >= 0)
+            {
+                omega[emptyCmpt] = L[emptyCmpt]/I;
+            }
+            else
+            {
+                omega = Vec3(L.x()/I, L.y()/I, L.z()/I);
+            }
         }
     }
 
-    const roughWall::Vec3 omega0(omega);
-
-    vector emptyDirection(Zero);
-    if (twoD)
-    {
-        emptyDirection[patches_.emptyComponent()] = 1;
-    }
+    const scalar omega0Sqr = omega.squaredNorm();
 
     auto& rndGen = this->owner().rndGen();
     cloudUniform01<std::remove_reference_t<decltype(rndGen)>> uniform01(rndGen);
@@ -188,51 +190,51 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
         (
             v,
             omega,
-            toCore(n),
+            n,
             0.5*p.d(),
             data.parameters(p.d()),
             uniform01,
-            toCore(emptyDirection)
+            emptyDirection
         );
 
-    if (!std::isfinite(v.squaredNorm()) || !std::isfinite(omega.squaredNorm()))
+    const scalar v1Sqr = v.squaredNorm();
+    const scalar omega1Sqr = omega.squaredNorm();
+
+    if (!std::isfinite(v1Sqr) || !std::isfinite(omega1Sqr))
     {
+        using roughWallAdapter::toFoam;
         FatalErrorInFunction
             << "Non-finite rebound on patch " << pp.name()
             << " for a parcel of diameter " << p.d()
-            << " with velocity " << p.U() << " relative to the wall " << U0
-            << " (core result: velocity " << toFoam(v) << ", spin "
-            << toFoam(omega) << ")." << exit(FatalError);
+            << " with velocity " << p.U() << " relative to the wall "
+            << toFoam(v0) << " (core result: velocity " << toFoam(v)
+            << ", spin " << toFoam(omega) << ")." << exit(FatalError);
     }
 
-    vector U1(toFoam(v));
-    constrainToPlane(U1);
-    p.U() = U1 + Up;
+    p.U() = vector(v.x() + Up.x(), v.y() + Up.y(), v.z() + Up.z());
 
     scalar rotationalEnergyLoss = 0;
 
     if constexpr (withSpin)
     {
-        vector omega1(toFoam(omega));
-        constrainSpinToPlane(omega1);
-        p.angularMomentum() = I*omega1;
-
-        rotationalEnergyLoss =
-            0.5*I*(omega0.squaredNorm() - magSqr(omega1));
+        p.angularMomentum() = vector(I*omega.x(), I*omega.y(), I*omega.z());
+        rotationalEnergyLoss = 0.5*I*(omega0Sqr - omega1Sqr);
     }
 
-    // Statistics, relative to the wall
-    const scalar kn = -(U1 & n)/Un0;
+    // Statistics, relative to the wall: k_n, and k_t along the incident
+    // tangential velocity (none at normal incidence)
+    const scalar kn = -v.dot(n)/Un0;
 
-    const vector Ut0 = U0 - Un0*n;
-    const scalar magUt0 = mag(Ut0);
-    const bool hasKt = magUt0 > SMALL*mag(U0);
-    const scalar kt = hasKt ? (U1 & Ut0)/sqr(magUt0) : 0;
+    const Vec3 Ut0(v0 - Un0*n);
+    const scalar Ut0Sqr = Ut0.squaredNorm();
+    const scalar v0Sqr = v0.squaredNorm();
+    const bool hasKt = Ut0Sqr > sqr(SMALL)*v0Sqr;
+    const scalar kt = hasKt ? v.dot(Ut0)/Ut0Sqr : 0;
 
     const scalar energyLoss =
         p.nParticle()
        *(
-            0.5*p.mass()*(magSqr(U0) - magSqr(U1))
+            0.5*p.mass()*(v0Sqr - v1Sqr)
           + rotationalEnergyLoss
         );
 

@@ -95,6 +95,10 @@ void Foam::roughWallPatchData::readRough(const dictionary& dict)
 
     roughnessAngle_ = roughnessAngleTable(dict, "roughnessAngle");
 
+    // A constant Delta is set once (parameters(d) sets a diameter-dependent
+    // one per call)
+    rough_.roughnessAngle = roughnessAngle_.value(0);
+
     rough_.lateralTilt = readSwitchOrDefault
     (
         dict, "lateralTilt",

@@ -46,36 +46,6 @@ Foam::roughWallStatistics::roughWallStatistics(const label nPatches)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::roughWallStatistics::addHit
-(
-    const label patchi,
-    const roughWall::RoughWallReport& report,
-    const scalar kn,
-    const bool hasKt,
-    const scalar kt,
-    const scalar energyLoss
-)
-{
-    label* c = &counts_[patchi*nCountTypes];
-    scalar* s = &sums_[patchi*nSumTypes];
-
-    ++c[HITS];
-    c[NO_SLIP] += report.noSlip;
-    c[SLIDING] += report.sliding;
-    c[FALLBACKS] += report.fallback ? 1 : 0;
-
-    s[GAMMA] += roughWall::limits::radToDeg(report.firstGamma);
-    s[KN] += kn;
-    s[ENERGY_LOSS] += energyLoss;
-
-    if (hasKt)
-    {
-        ++c[KT_SAMPLES];
-        s[KT] += kt;
-    }
-}
-
-
 void Foam::roughWallStatistics::addEscape
 (
     const label patchi,
