@@ -7,8 +7,10 @@
 // m = 2^48, 31 output bits) fed to std::uniform_real_distribution<double>,
 // which needs two engine calls per double; the model's cloudUniform01 then
 // maps the (rare) rounding to 1 back below 1. Timing the core with it gives
-// the cost the model pays inside OpenFOAM (less one out-of-line call).
-// Mt19937Uniform01 is the core tests' source, for comparison.
+// the cost the model pays inside OpenFOAM v1912 (less one out-of-line call).
+// Foam13Uniform01 reproduces OpenFOAM-13's randomGenerator::scalar01(), the
+// source of the model on OpenFOAM-13 (and -12). Mt19937Uniform01 is the
+// core tests' source, for comparison.
 #pragma once
 
 #include <cstdint>
@@ -56,6 +58,29 @@ public:
     double operator()()
     {
         const double u = uniform01_(generator_);
+        return u < 1 ? u : 0.99999999999999989;
+    }
+};
+
+//- randomGenerator::scalar01() of OpenFOAM-13 (and -12) as the OpenFOAM
+//  model calls it: the same 48-bit LCG, its 31 high bits over 2^31 (inline
+//  in OpenFOAM, no long double); seed as randomGenerator(seed) on one
+//  processor
+class Foam13Uniform01
+{
+    std::uint64_t x_;
+
+public:
+
+    explicit Foam13Uniform01(std::uint64_t seed = 1)
+    :
+        x_((seed << 16) + 0x330E)
+    {}
+
+    double operator()()
+    {
+        x_ = (0x5DEECE66DULL*x_ + 0xBULL) & ((std::uint64_t(1) << 48) - 1);
+        const double u = double(x_ >> 17)/double(std::uint64_t(1) << 31);
         return u < 1 ? u : 0.99999999999999989;
     }
 };

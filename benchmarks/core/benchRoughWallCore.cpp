@@ -5,13 +5,16 @@
 // Benchmark names are "/"-separated key:value pairs, parsed by
 // benchmarks/scripts/hitCost.py:
 //   hit/model:rough/spin:1/lateral:0/dim:3/alpha:5/Delta:8/rng:foam
-//       collideWithRoughWall<spin> (sample, tilt, collide, re-collide)
+//       collideWithRoughWall<spin> (sample, tilt, collide, re-collide);
+//       rng:foam is v1912's Random (Rand48 through uniform_real_distribution),
+//       rng:foam13 OpenFOAM-13's randomGenerator, rng:mt19937 the tests'
+//       source
 //   hit/model:smooth/spin:1/dim:3/alpha:5/rng:foam
 //       collideWithFacet<spin> with the mean-wall normal: a smooth hard-sphere
 //       rebound with the same friction law
 //   hit/model:standard/alpha:5
 //       the rebound arithmetic of OpenFOAM's StandardWallInteraction (e, mu)
-//   uniform01/rng:foam             one uniform draw
+//   uniform01/rng:foam             one uniform draw (also rng:foam13, mt19937)
 //   sampler/method:exact/h:1       one sample of P(gamma, alpha), h = alpha/Delta
 // alpha:mix draws alpha ~ U(0, 90 deg) per hit. Counters: facetCollisions
 // (mean per hit), fallbacks (fraction of hits), proposals (rejection sampler).
@@ -206,6 +209,12 @@ void registerAll()
                 ("hit/model:rough/spin:1/lateral:0/dim:3" + tail + "/rng:foam").c_str(),
                 roughHit<true, FoamUniform01>, a, D, false, false
             );
+            // OpenFOAM-13's random source (the first platform)
+            benchmark::RegisterBenchmark
+            (
+                ("hit/model:rough/spin:1/lateral:0/dim:3" + tail + "/rng:foam13").c_str(),
+                roughHit<true, Foam13Uniform01>, a, D, false, false
+            );
             benchmark::RegisterBenchmark
             (
                 ("hit/model:rough/spin:0/lateral:0/dim:3" + tail + "/rng:foam").c_str(),
@@ -251,6 +260,7 @@ void registerAll()
     }
 
     benchmark::RegisterBenchmark("uniform01/rng:foam", uniformDraw<FoamUniform01>);
+    benchmark::RegisterBenchmark("uniform01/rng:foam13", uniformDraw<Foam13Uniform01>);
     benchmark::RegisterBenchmark("uniform01/rng:mt19937", uniformDraw<Mt19937Uniform01>);
 
     const std::vector<std::pair<Sampler, std::string>> samplers{

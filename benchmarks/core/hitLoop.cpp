@@ -6,11 +6,13 @@
 // divides the difference of the collected instruction counts.
 // Copyright (C) 2026 roughWallInteraction authors. SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Usage: hitLoop model spin lateral dim alpha Delta hits
+// Usage: hitLoop model spin lateral dim alpha Delta hits [rng]
 //   model    rough | smooth | standard | none (the loop and table alone)
 //   spin     0 | 1        lateral 0 | 1        dim 2 | 3
 //   alpha    incidence [deg], or "mix" for U(0, 90 deg)
 //   Delta    roughness angle [deg]
+//   rng      foam (default: v1912's Random) | foam13 (OpenFOAM-13's
+//            randomGenerator)
 // Prints a checksum of the outgoing velocities.
 
 #include "benchRandom.hpp"
@@ -30,7 +32,7 @@ namespace
 
 enum class Model { rough, smooth, standard, none };
 
-template<bool withSpin, Model model>
+template<bool withSpin, Model model, class Uniform = FoamUniform01>
 double loop
 (
     const IncidentTable& table,
@@ -38,7 +40,7 @@ double loop
     long hits
 )
 {
-    FoamUniform01 uniform01(1);
+    Uniform uniform01(1);
     const Vec3 nw = -table.wallNormal;
     double checksum = 0;
     for (long n = 0; n < hits; ++n)
@@ -86,11 +88,12 @@ double loop
 
 int main(int argc, char** argv)
 {
-    if (argc != 8)
+    if (argc != 8 && argc != 9)
     {
-        std::fprintf(stderr, "usage: hitLoop model spin lateral dim alpha Delta hits\n");
+        std::fprintf(stderr, "usage: hitLoop model spin lateral dim alpha Delta hits [foam|foam13]\n");
         return 2;
     }
+    const bool foam13 = argc == 9 && std::string(argv[8]) == "foam13";
     const std::string model = argv[1];
     const bool spin = std::atoi(argv[2]);
     const std::string alpha = argv[5];
@@ -106,7 +109,12 @@ int main(int argc, char** argv)
     const long hits = std::atol(argv[7]);
 
     double checksum = 0;
-    if (model == "rough")
+    if (model == "rough" && foam13)
+    {
+        checksum = spin ? loop<true, Model::rough, Foam13Uniform01>(table, p, hits)
+                        : loop<false, Model::rough, Foam13Uniform01>(table, p, hits);
+    }
+    else if (model == "rough")
     {
         checksum = spin ? loop<true, Model::rough>(table, p, hits)
                         : loop<false, Model::rough>(table, p, hits);

@@ -13,6 +13,7 @@ import argparse
 import os
 import re
 import shutil
+import statistics
 import subprocess
 import sys
 
@@ -102,7 +103,7 @@ def markdown(rows, machine):
                "friction law; ratio = rough/smooth; facet collisions per hit "
                "in brackets.\n")
     out.append("Incidence alpha ~ U(0, 90 deg), glass on steel (e = 0.8, "
-               "mu0 = muD = 0.4), OpenFOAM's Rand48 random source:\n")
+               "mu0 = muD = 0.4):\n")
     out.append("| configuration | smooth | " + " | ".join(
         "Delta = %s deg" % d for d in DELTAS) + " |")
     out.append("|---|---|" + "---|"*len(DELTAS))
@@ -118,12 +119,30 @@ def markdown(rows, machine):
             cells.append("%.0f (x%.1f) [%.3f]" % (
                 v, v/smooth, float(r["facetCollisions"])))
         out.append("| %s | %.1f | %s |" % (label, smooth, " | ".join(cells)))
+    smooth = ns(t, smooth_name("1", "3", "mix"))
+    cells = []
+    for d in DELTAS:
+        r = t.get(rough_name("1", "0", "3", "mix", d, "foam13"))
+        if not r:
+            cells.append("-")
+            continue
+        v = float(r["ns_per_hit"])
+        cells.append("%.0f (x%.1f) [%.3f]" % (v, v/smooth,
+                                              float(r["facetCollisions"])))
+    out.append("| 3-D, spin, OpenFOAM-13's random source | %.1f | %s |"
+               % (smooth, " | ".join(cells)))
     std = ns(t, "hit/model:standard/alpha:mix")
     u_foam = ns(t, "uniform01/rng:foam")
+    u_foam13 = ns(t, "uniform01/rng:foam13")
     u_mt = ns(t, "uniform01/rng:mt19937")
-    out.append("\nOpenFOAM's StandardWallInteraction rebound arithmetic: "
-               "%.1f ns per hit. One uniform draw: %.1f ns (Rand48, as in "
-               "OpenFOAM), %.1f ns (mt19937_64)." % (std, u_foam, u_mt))
+    out.append("\nRandom source: v1912's `Random` (Rand48 through "
+               "`uniform_real_distribution`, what the model draws from on "
+               "v1912) in every row but the last, OpenFOAM-13's "
+               "`randomGenerator::scalar01()` in the last. "
+               "OpenFOAM's StandardWallInteraction rebound arithmetic: "
+               "%.1f ns per hit. One uniform draw: %.1f ns (v1912's Random), "
+               "%.1f ns (OpenFOAM-13's randomGenerator), %.1f ns "
+               "(mt19937_64)." % (std, u_foam, u_foam13, u_mt))
     mt = ns(t, rough_name("1", "0", "3", "mix", "8", "mt19937"))
     out.append("3-D with spin at Delta = 8 deg with mt19937_64 instead of "
                "Rand48: %.0f ns.\n" % mt)
@@ -205,12 +224,98 @@ def figure(rows):
     print("wrote " + path)
 
 
-def collected(hit_loop, argv, hits):
+def collected(hit_loop, argv, hits, rng="foam"):
     out = subprocess.run(
         ["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null",
-         hit_loop] + argv + [str(hits)],
+         hit_loop] + argv + [str(hits), rng],
         capture_output=True, text=True, check=True).stderr
     return int(re.search(r"Collected : (\d+)", out).group(1))
+
+
+def instruction_row(hit_loop, case):
+    """Instructions per hit of hitLoop: the difference of two hit counts.
+    case: (model, spin, lateral, dim, alpha, Delta[, rng])"""
+    argv, rng = list(case[:6]), (case[6] if len(case) > 6 else "foam")
+    n1, n2 = 50000, 150000
+    per_hit = (collected(hit_loop, argv, n2, rng)
+               - collected(hit_loop, argv, n1, rng))/(n2 - n1)
+    print("%s %s: %.1f instructions per hit" % (" ".join(argv), rng,
+                                                per_hit), flush=True)
+    return dict(model=case[0], spin=case[1], lateral=case[2], dim=case[3],
+                alpha=case[4], Delta=case[5], rng=rng,
+                instructions_per_hit="%.1f" % per_hit)
+
+
+#: The configurations of the side-by-side comparison (--compare)
+COMPARE = [(spin, d, rng) for rng in ("foam", "foam13") for d in ("2", "8")
+           for spin in ("1",)] + [("0", "8", "foam")]
+
+
+def compare(args):
+    """The core against an earlier build of it (--compare-bench,
+    --compare-hit-loop: the same benchmark sources compiled with the earlier
+    core headers), side by side: the Google Benchmark of each configuration
+    of COMPARE, the two binaries alternated over --rounds rounds (median of
+    the rounds), and the instructions per hit of both. Writes
+    benchmarks/results/hit-cost-compare.csv and .md"""
+    regex = "^(%s)$" % "|".join(
+        re.escape(rough_name(spin, "0", "3", "mix", d, rng))
+        for spin, d, rng in COMPARE)
+    times = {}
+    for rnd in range(args.rounds):
+        for label, binary in (("before", args.compare_bench),
+                              ("after", args.bench))[::1 if rnd % 2 == 0
+                                                     else -1]:
+            runs = bc.run_google_benchmark(
+                binary, regex, args.min_time, 3,
+                os.path.join(bc.RESULTS, "hit-cost-compare.json"))
+            for name, r in runs.items():
+                times.setdefault((label, name), []).append(r["cpu_ns"])
+    os.remove(os.path.join(bc.RESULTS, "hit-cost-compare.json"))
+    rows = []
+    for spin, d, rng in COMPARE:
+        name = rough_name(spin, "0", "3", "mix", d, rng)
+        case = ("rough", spin, "0", "3", "mix", d, rng)
+        row = dict(spin=spin, Delta=d, rng=rng)
+        for label, hit_loop in (("before", args.compare_hit_loop),
+                                ("after", args.hit_loop)):
+            t = times.get((label, name), [])
+            row[label + "_ns"] = "%.1f" % statistics.median(t) if t else ""
+            row[label + "_ns_rounds"] = " ".join("%.1f" % x for x in t)
+            row[label + "_instructions"] = \
+                instruction_row(hit_loop, case)["instructions_per_hit"] \
+                if hit_loop and shutil.which("valgrind") else ""
+        rows.append(row)
+    bc.write_csv("hit-cost-compare.csv", rows)
+    compare_table(rows, args.rounds)
+
+
+def compare_table(rows, rounds=None):
+    load = open("/proc/loadavg").read().split()[0]
+    lines = ["Side by side, the core before and after (the same benchmark "
+             "sources, the two builds alternated%s; alpha ~ U(0, 90 deg), "
+             "3-D; median CPU time per hit of the rounds (range), and "
+             "instructions per hit, callgrind of hitLoop):" % (
+                 " over %d rounds" % rounds if rounds else ""), "",
+             "| spin | Delta [deg] | random source | before [ns] | after "
+             "[ns] | after/before | before [instructions] | after "
+             "[instructions] |", "|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        b = [float(x) for x in r["before_ns_rounds"].split()]
+        a = [float(x) for x in r["after_ns_rounds"].split()]
+        lines.append("| %s | %s | %s | %s (%.0f-%.0f) | %s (%.0f-%.0f) | "
+                     "%.2f | %s | %s |" % (
+                         "yes" if r["spin"] == "1" else "no", r["Delta"],
+                         {"foam": "v1912 Random",
+                          "foam13": "OpenFOAM-13 randomGenerator"}[r["rng"]],
+                         r["before_ns"], min(b), max(b), r["after_ns"],
+                         min(a), max(a),
+                         float(r["after_ns"])/float(r["before_ns"]),
+                         r["before_instructions"], r["after_instructions"]))
+    text = "\n".join(lines) + "\n"
+    with open(os.path.join(bc.RESULTS, "hit-cost-compare.md"), "w") as f:
+        f.write(text)
+    print(text)
 
 
 def instructions(args):
@@ -218,6 +323,8 @@ def instructions(args):
         print("valgrind not found: no instruction counts")
         return
     cases = [("rough", "1", "0", "3", "mix", d) for d in DELTAS] + [
+        ("rough", "1", "0", "3", "mix", d, "foam13") for d in ("2", "8")
+    ] + [
         ("rough", s, l, dim, "mix", "8")
         for s, l, dim in (("1", "1", "3"), ("0", "0", "3"), ("0", "0", "2"))
     ] + [
@@ -226,19 +333,12 @@ def instructions(args):
         ("standard", "0", "0", "3", "mix", "8"),
         ("none", "1", "0", "3", "mix", "8"),
     ]
-    n1, n2 = 50000, 150000
     rows = []
     for case in cases:
-        argv = list(case)
-        per_hit = (collected(args.hit_loop, argv, n2)
-                   - collected(args.hit_loop, argv, n1))/(n2 - n1)
-        rows.append(dict(model=case[0], spin=case[1], lateral=case[2],
-                         dim=case[3], alpha=case[4], Delta=case[5],
-                         instructions_per_hit="%.1f" % per_hit))
-        print("%s: %.1f instructions per hit" % (" ".join(argv), per_hit))
+        rows.append(instruction_row(args.hit_loop, case))
     bc.write_csv("hit-instructions.csv", rows)
-    lines = ["| model | spin | lateral | dim | alpha | Delta | instructions "
-             "per hit |", "|---|---|---|---|---|---|---|"]
+    lines = ["| model | spin | lateral | dim | alpha | Delta | random source "
+             "| instructions per hit |", "|---|---|---|---|---|---|---|---|"]
     for r in rows:
         lines.append("| %s |" % " | ".join(r.values()))
     with open(os.path.join(bc.RESULTS, "hit-instructions.md"), "w") as f:
@@ -291,10 +391,18 @@ def main():
                    help="redo table and figure from the stored CSV")
     p.add_argument("--profile", action="store_true",
                    help="only: perf and callgrind profiles of one hit")
+    p.add_argument("--compare-bench", help="only: side by side with this "
+                   "benchRoughWallCore (an earlier core)")
+    p.add_argument("--compare-hit-loop", help="--compare-bench: its hitLoop")
+    p.add_argument("--rounds", type=int, default=6,
+                   help="--compare-bench: rounds of the alternation")
     args = p.parse_args()
     bc.ensure_dirs()
     if args.profile:
         profile(args)
+        return
+    if args.compare_bench:
+        compare(args)
         return
     if args.plot_only:
         rows = load()

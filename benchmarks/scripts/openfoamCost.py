@@ -438,6 +438,7 @@ def measure(runner, args):
                 hits = r["hits"] if variant in ("rough", BASE) \
                     else smooth_hits
                 row = dict(platform=runner.platform.name, tag=runner.tag,
+                           baseline=runner.baseline or "",
                            mesh=MESH_NAMES[boxes], parcels=parcels, np=np,
                            round=rnd, variant=variant, end_time=end_time,
                            steps=r["steps"], hits=hits,
@@ -629,8 +630,13 @@ def two_box_table(rows):
     return text
 
 
-def command_of(tag, platform):
+def command_of(tag, platform, baseline=""):
+    """The benchmarks/run command of a result (baseline: the directory of
+    the rough-base library, build/benchmarks/baseline-<rev>/lib/...)"""
     extra = " --parcel-o3" if tag.endswith("parcelO3") else ""
+    m = re.search(r"baseline-(\w+)", baseline or "")
+    if m:
+        extra += " --baseline " + m.group(1)
     return "benchmarks/run --platform %s%s openfoam" % (platform, extra)
 
 
@@ -642,7 +648,7 @@ def table(tag, summary, rows):
     head = ["%s (%s), `%s`; %s; %d rounds, the order reversed every other "
             "round; load average %.1f-%.1f during the runs." % (
                 PLATFORM_NAMES.get(platform, platform), tag,
-                command_of(tag, platform),
+                command_of(tag, platform, rows[0].get("baseline")),
                 "foamRun (functions + incompressibleFluid, clouds fvModel), "
                 "collidingCloud" if platform == "openfoam13" else
                 "icoUncoupledKinematicParcelFoam (colliding cloud)",
@@ -918,6 +924,7 @@ def callgrind(runner, args):
         total, calls, parts, callees = callgrind_profile(
             out, MODEL_ENTRY[variant])
         row = dict(platform=runner.platform.name, tag=runner.tag,
+                   baseline=runner.baseline or "",
                    variant=variant, parcels=parcels, end_time=end_time,
                    hits=hits, total=total, correct_calls=calls,
                    correct_inclusive=int(sum(parts.values())))
@@ -949,19 +956,19 @@ def callgrind_table(tag, rows):
                  "foamRun" if platform == "openfoam13"
                  else "icoUncoupledKinematicParcelFoam",
                  rows[0]["parcels"], rows[0]["end_time"],
-                 command_of(tag, platform)), "",
-             "| variant | wall hits | correct() calls | whole run per hit | "
-             "whole run per hit - standard's | correct() per call (inclusive) "
-             "| correct() per call - standard's |", "|---|---|---|---|---|---|---|"]
+                 command_of(tag, platform, rows[0].get("baseline"))), "",
+             "| variant | wall hits | correct() calls | whole run [10^6 "
+             "instructions] | whole run - standard's, per wall hit of the "
+             "variant | correct() per call (inclusive) | correct() per call - "
+             "standard's |", "|---|---|---|---|---|---|---|"]
     for r in rows:
         h, c = int(r["hits"]), int(r["correct_calls"])
         per_call = int(r["correct_inclusive"])/c if c else float("nan")
         st_call = int(st["correct_inclusive"])/int(st["correct_calls"]) \
             if st and int(st["correct_calls"]) else float("nan")
-        whole = int(r["total"])/h
-        lines.append("| %s | %d | %d | %.0f | %s | %.0f | %s |" % (
-            r["variant"], h, c, whole,
-            "%.0f" % (whole - int(st["total"])/int(st["hits"]))
+        lines.append("| %s | %d | %d | %.1f | %s | %.0f | %s |" % (
+            r["variant"], h, c, int(r["total"])/1e6,
+            "%.0f" % ((int(r["total"]) - int(st["total"]))/h)
             if st and r is not st else "-",
             per_call, "%.0f" % (per_call - st_call)
             if st and r is not st else "-"))
@@ -970,10 +977,20 @@ def callgrind_table(tag, rows):
     lines += ["", "correct() per call, by part [instructions]:", "",
               "| part | " + " | ".join(r["variant"] for r in rows) + " |",
               "|---|" + "---|"*len(rows)]
+    def per_call(r, k):
+        c = int(r["correct_calls"])
+        return float(r.get(k, 0))/c if c else 0.0
+
+    small = [k for k in parts if max(per_call(r, k) for r in rows) < 2]
     for k in parts:
-        lines.append("| %s | %s |" % (k[6:], " | ".join(
-            "%.0f" % (float(r.get(k, 0))/int(r["correct_calls"]))
-            if int(r["correct_calls"]) else "-" for r in rows)))
+        if k not in small:
+            lines.append("| %s | %s |" % (k[6:], " | ".join(
+                "%.0f" % per_call(r, k) for r in rows)))
+    if small:
+        lines.append("| other (%d functions, each < 2 per call) | %s |" % (
+            len(small), " | ".join("%.0f" % sum(per_call(r, k)
+                                                for k in small)
+                                   for r in rows)))
     lines.append("| **all** | %s |" % " | ".join(
         "%.0f" % (int(r["correct_inclusive"])/int(r["correct_calls"]))
         if int(r["correct_calls"]) else "-" for r in rows))
