@@ -71,18 +71,14 @@ benchmarks/results/openfoam-callgrind.<tag>.md and .csv.
 --profile: perf (software clock) profiles of the rough and the standard run
 of the middle parcel count: openfoam-profile-<variant>.<tag>.txt.
 
---tutorial (openfoam1912 only: the tutorial is v1912's): the tutorial's
-short case (horizontalChannel, 195 um, 4000 parcels, 1 s spin-up + 1 s,
-dt = 1 ms; --quick: 500 parcels, 0.2 s + 0.2 s) with its smooth wall
-(standardWallInteraction) and rough2.5, set up as its Allrun does
-(tutorialWorkPrecision.run_case), serial and decomposed on 2 ranks
-(--ranks) as Allrun -parallel N does (simple, n (N 1 1): streamwise slabs),
-all alternated round by round. Each rank has its own random generator, so
-the runs on several ranks differ from the serial one in detail. Writes
-benchmarks/results/openfoam-tutorial-cost.csv and .md (CPU and wall time,
-wall hits per second, rough/smooth ratios at each rank count, speed-ups over
-the rank counts), then openfoam-tutorial-profile-<variant>.txt (perf,
-serial runs).
+--tutorial (openfoam13 only: the tutorial is OpenFOAM-13's): the tutorial
+tutorials/incompressibleFluid/horizontalChannel (195 um, 4000 parcels, 1 s
+spin-up + 1 s sampled, dt = 1 ms; --quick: 500 parcels, 0.2 s + 0.2 s),
+each variant run by its own Allrun (tutorialWorkPrecision.run_config), with
+OpenFOAM's standardWallInteraction (standard) and the library's smooth and
+rough2.5 walls, alternated round by round, serial (the tutorial has no
+parallel option). Writes benchmarks/results/openfoam-tutorial-cost.csv and
+.md.
 
 --lib-path DIR: DIR first on LD_LIBRARY_PATH for every variant (e.g. an
 OpenFOAM-13 liblagrangianParcel.so compiled at -O3: benchmarks/run
@@ -1039,101 +1035,45 @@ def profile(runner, args):
 
 
 # ---------------------------------------------------------------------------
-# The tutorial's case (v1912: tutorials/icoUncoupledKinematicParcelFoam)
+# The tutorial's case (tutorials/incompressibleFluid/horizontalChannel,
+# OpenFOAM-13)
 # ---------------------------------------------------------------------------
 
-SOLVER = "icoUncoupledKinematicParcelFoam"
-
-
-def sh(cmd, cwd, log):
-    with open(os.path.join(cwd, log), "w") as f:
-        subprocess.run(cmd, cwd=cwd, stdout=f, stderr=subprocess.STDOUT,
-                       check=True)
-
-
-TUTORIAL_VARIANTS = ("smooth", "rough2.5")
-TUTORIAL_CSV = os.path.join(bc.RESULTS, "openfoam-tutorial-cost.csv")
-
-
-def mesh_box(points_path):
-    """(xmin, xmax, ymin, ymax) of a polyMesh/points file"""
-    from foamio import read_list    # the tutorial's scripts/ (tw.prepare)
-    p = read_list(points_path)
-    return (float(p[:, 0].min()), float(p[:, 0].max()),
-            float(p[:, 1].min()), float(p[:, 1].max()))
-
-
-def check_slabs(case, nprocs):
-    """The decomposition of a case: each processor's extent. The tutorial's
-    (Allrun -parallel N, particles/system/decomposeParDict) is method
-    simple with n (N 1 1): N streamwise slabs, each the full channel height,
-    so that the load is balanced whatever the wall model does to the
-    parcels' heights (smooth walls: all on the floor). Returns (streamwise,
-    description)."""
-    whole = mesh_box(os.path.join(case, "constant", "polyMesh", "points"))
-    boxes = [mesh_box(os.path.join(case, "processor%d" % i, "constant",
-                                   "polyMesh", "points"))
-             for i in range(nprocs)]
-    tol = 1e-6*(whole[3] - whole[2])
-    streamwise = all(abs(b[2] - whole[2]) < tol and abs(b[3] - whole[3]) < tol
-                     and b[1] - b[0] < whole[1] - whole[0] - tol
-                     for b in boxes)
-    return streamwise, "%s: %s" % (
-        "streamwise slabs" if streamwise else "NOT streamwise slabs",
-        ", ".join("x %.3g-%.3g y %.3g-%.3g" % b for b in boxes))
+#: The tutorial's variants compared: OpenFOAM alone (standardWallInteraction,
+#: no spin models), the model with a smooth wall (roughnessAngle 0) and with
+#: Delta = 2.5 deg (both with the library's spin models, as the tutorial
+#: runs them)
+TUTORIAL_VARIANTS = ("standard", "smooth", "rough2.5")
+TUTORIAL_CSV = "openfoam-tutorial-cost.csv"
 
 
 def tutorial_measure(args):
-    """Rounds of smooth and rough2.5 at each rank count of args.ranks, the
-    order reversed every other round; returns the rows"""
+    """Rounds of the TUTORIAL_VARIANTS, each run by the tutorial's Allrun
+    (tutorialWorkPrecision.run_config: one variant, -jobs 1, serial: the
+    tutorial has no parallel option), the order reversed every other round;
+    returns the rows"""
     import tutorialWorkPrecision as tw
     bc.write_machine("openfoam-tutorial-cost")
     work = os.path.abspath(os.path.join(args.work, "tutorial"))
     os.makedirs(work, exist_ok=True)
-    tut, carrier_time, height = tw.prepare(work)
-    parcels, spin_up, end_time = (500, 0.2, 0.4) if args.quick \
-        else (4000, 1.0, 2.0)
-    runs = [(n, v) for n in args.ranks for v in TUTORIAL_VARIANTS]
-    slabs = {}
+    tut = tw.prepare(work)
+    parcels, spin_up, sampling = (500, 0.2, 0.2) if args.quick \
+        else (4000, 1.0, 1.0)
     rows = []
     for rnd in range(args.rounds):
-        for n, variant in (runs if rnd % 2 == 0 else runs[::-1]):
-            name = "cost-%s-np%d" % (variant, n)
-            wall, _, summary, _ = tw.run_case(
-                tut, carrier_time, height, name, variant, 195e-6, parcels,
-                spin_up, end_time, 1e-3, nprocs=n)
-            case = os.path.join(tut, "run", name)
-            # rank 0's log; the model's counts in it are reduced over the
-            # processors (roughWallStatistics::reduced)
-            log = open(os.path.join(case, "log." + SOLVER)).read()
-            exec_times = [float(x) for x in re.findall(
-                r"ExecutionTime = ([0-9.eE+-]+) s", log)]
-            hits = sum(int(h) for h in re.findall(
-                r"- hits\s+= (\d+)", log.split("ExecutionTime")[-2]))
-            info = dict(line.split(None, 1) for line in open(
-                os.path.join(case, "caseInfo")).read().splitlines()
-                if line.strip())
-            x0, x1, _, _ = mesh_box(os.path.join(case, "constant", "polyMesh",
-                                                 "points"))
-            if n > 1 and n not in slabs:
-                slabs[n] = check_slabs(case, n)
-                print("decomposition on %d ranks: %s" % (n, slabs[n][1]))
-                if not slabs[n][0]:
-                    print("WARNING: the slabs are not streamwise")
-            ux = abs(float(summary["meanUx"]))
-            row = dict(
-                round=rnd, variant=variant, ranks=n, parcels=parcels,
-                end_time=end_time, wall="%.2f" % wall,
-                step_cpu="%.2f" % (exec_times[-1] - exec_times[0]),
-                process_cpu=info["processCpu"].strip(), model_hits=hits,
-                hits_per_parcel_s="%.2f" % (hits/(parcels*end_time)),
-                # N slab boundaries per period (one of them on the cyclic
-                # patch): a parcel at the mean Ux crosses N Ux/Lx a second
-                crossings_per_parcel_s="%.1f" % (n*ux/(x1 - x0))
-                if n > 1 else "0",
-                meanUx="%.3f" % ux, upperFraction=summary["upperFraction"],
-                decomposition=slabs[n][1] if n > 1 else "serial",
-                load=open("/proc/loadavg").read().split()[0])
+        for variant in (TUTORIAL_VARIANTS if rnd % 2 == 0
+                        else TUTORIAL_VARIANTS[::-1]):
+            name = "cost-%s-%d" % (variant, rnd)
+            summary, _ = tw.run_config(tut, name, variant, parcels, spin_up,
+                                       sampling, 1e-3)
+            row = dict(round=rnd, variant=variant, parcels=parcels,
+                       spin_up=spin_up, sampling=sampling,
+                       cpu="%.2f" % float(summary["cpuTime"]),
+                       wall="%.2f" % float(summary["wallClock"]),
+                       hits_lower=summary.get(
+                           "hitsPerParcelPerMetre_lowerWall", ""),
+                       upperFraction=summary["upperFraction"],
+                       load=open("/proc/loadavg").read().split()[0])
             rows.append(row)
             print(row, flush=True)
     bc.write_csv(TUTORIAL_CSV, rows)
@@ -1141,88 +1081,57 @@ def tutorial_measure(args):
 
 
 def tutorial_table(rows):
-    """Medians per variant and rank count, the paired rough/smooth ratios
-    and the speed-ups over the rank counts, per round"""
-    for r in rows:                      # a CSV from before the MPI runs
-        r.setdefault("ranks", "1")
-    ranks = sorted({int(r["ranks"]) for r in rows})
+    """Medians per variant and the paired ratios to standard and smooth"""
     variants = [v for v in TUTORIAL_VARIANTS
                 if any(r["variant"] == v for r in rows)]
-    rounds = sorted({int(r["round"]) for r in rows})
 
-    def of(variant, n, key):
+    def of(variant, key):
         return [float(r[key]) for r in rows if r["variant"] == variant
-                and int(r["ranks"]) == n and r.get(key, "") not in ("", None)]
+                and r.get(key, "") not in ("", None)]
 
-    def paired(key, a, b):
-        return paired_ratios(rows, "ranks", key, a, b)
-
-    def med(variant, n, key):
-        v = of(variant, n, key)
-        return statistics.median(v) if v else float("nan")
+    def paired(a, b):
+        out = []
+        for rnd in sorted({int(r["round"]) for r in rows}):
+            t = {r["variant"]: float(r["cpu"]) for r in rows
+                 if int(r["round"]) == rnd}
+            if a in t and b in t and t[b] > 0:
+                out.append(t[a]/t[b])
+        return out
 
     r0 = rows[0]
     loads = [float(r["load"]) for r in rows]
-    text = ["Tutorial horizontalChannel (195 um, %s parcels, %s s with the "
-            "first half spin-up, dt = 1 ms), smooth (standardWallInteraction) "
-            "and rough2.5, on %s MPI rank(s), %d rounds, the order reversed "
-            "every other round; load average %.1f-%.1f." % (
-                r0["parcels"], r0["end_time"],
-                ", ".join(str(n) for n in ranks), len(rounds), min(loads),
-                max(loads))]
-    for n in ranks[1:]:
-        d = [r.get("decomposition", "") for r in rows if int(r["ranks"]) == n]
-        text.append("\nDecomposition on %d ranks (the tutorial's: simple, "
-                    "n (%d 1 1)): %s." % (n, n, d[0] if d and d[0] else "?"))
-    text += ["", "| variant | MPI ranks | runs | CPU of the time steps, rank 0 "
-             "[s] | wall clock of the solver [s] | CPU of all processes [s] "
-             "| wall hits (model) | hits per CPU s (rank 0) | hits per wall "
-             "s | hits per parcel s | processor crossings per parcel s "
-             "(estimate) |", "|---|---|---|---|---|---|---|---|---|---|---|"]
+    text = ["OpenFOAM-13, tutorial incompressibleFluid/horizontalChannel "
+            "(195 um, %s parcels, %s s spin-up + %s s sampled, dt = 1 ms), "
+            "each variant by the tutorial's Allrun, serial, %d rounds, the "
+            "order reversed every other round; load average %.1f-%.1f "
+            "(`benchmarks/run --platform openfoam13 openfoam`, its "
+            "`openfoamCost.py --tutorial` step)." % (
+                r0["parcels"], r0["spin_up"], r0["sampling"],
+                len({r["round"] for r in rows}), min(loads), max(loads)), "",
+            "| variant | runs | solver CPU [s] (range) | wall clock [s] | "
+            "lower-wall hits per parcel and metre | upper-half fraction |",
+            "|---|---|---|---|---|---|"]
     for v in variants:
-        for n in ranks:
-            cpu, wall = med(v, n, "step_cpu"), med(v, n, "wall")
-            hits = of(v, n, "model_hits")
-            h = statistics.median(hits) if hits and max(hits) > 0 else None
-            cross = of(v, n, "crossings_per_parcel_s")
-            text.append("| %s | %d | %d | %.2f | %.2f | %.2f | %s | %s | %s | "
-                        "%s | %s |" % (
-                            v, n, len(of(v, n, "step_cpu")), cpu, wall,
-                            med(v, n, "process_cpu"),
-                            "%d" % h if h else "(not counted)",
-                            "%.0f" % (h/cpu) if h else "-",
-                            "%.0f" % (h/wall) if h else "-",
-                            "%.1f" % (h/(float(r0["parcels"])
-                                         * float(r0["end_time"])))
-                            if h else "-",
-                            "%.0f" % statistics.median(cross) if cross
-                            else "-"))
-    if len(variants) == 2:
-        a, b = variants[1], variants[0]
-        text += ["", "| MPI ranks | %s/%s, CPU of the time steps: median of "
-                 "the paired rounds (range) | %s/%s, wall clock |" % (
-                     a, b, a, b), "|---|---|---|"]
-        for n in ranks:
-            text.append("| %d | %s | %s |" % (
-                n, median_range(paired("step_cpu", (a, n), (b, n))),
-                median_range(paired("wall", (a, n), (b, n)))))
-    if len(ranks) > 1:
-        n1 = ranks[0]
-        text += ["", "| variant | ranks | speed-up from %d rank(s), CPU of the "
-                 "time steps (rank 0): median of the rounds (range) | "
-                 "speed-up, wall clock | parallel efficiency (CPU of the "
-                 "steps) |" % n1, "|---|---|---|---|---|"]
-        text += speedup_rows(variants, ranks, paired)
-    text += ["", "CPU of the time steps: rank 0's last ExecutionTime minus "
-             "its first (start-up excluded; OpenMPI polls while it waits, so "
-             "on several ranks this is about the elapsed time of the steps). "
-             "Wall clock: the solver's process (mpirun and start-up "
-             "included). CPU of all processes: getrusage of the solver, all "
-             "ranks and mpirun. Hits: the rough model's count at the end, "
-             "reduced over the processors (standardWallInteraction counts "
-             "none). Processor crossings: N slab boundaries per streamwise "
-             "period Lx, N |mean Ux|/Lx per parcel and second (mean Ux of "
-             "the sampled parcels)."]
+        cpu = of(v, "cpu")
+        hits = of(v, "hits_lower")
+        text.append("| %s | %d | %s | %.1f | %s | %.3f |" % (
+            v, len(cpu), median_range(cpu, 1),
+            statistics.median(of(v, "wall")),
+            "%.3g" % statistics.median(hits) if hits else "-",
+            statistics.median(of(v, "upperFraction"))))
+    text += ["", "| ratio of the solver CPU, paired rounds | median "
+             "(range) |", "|---|---|"]
+    for a, b in (("rough2.5", "standard"), ("smooth", "standard"),
+                 ("rough2.5", "smooth")):
+        if a in variants and b in variants:
+            text.append("| %s/%s | %s |" % (a, b,
+                                            median_range(paired(a, b))))
+    text += ["", "Solver CPU: the tutorial's cpuTime (the particle run's "
+             "last ExecutionTime; the carrier flow is computed once, "
+             "before the rounds). standard is OpenFOAM alone; smooth and "
+             "rough2.5 run the library's patch interaction model and its "
+             "spin models (rotational lift, fluid torque), so "
+             "rough2.5/smooth is the rough wall alone."]
     text = "\n".join(text) + "\n"
     with open(os.path.join(bc.RESULTS, "openfoam-tutorial-cost.md"),
               "w") as f:
@@ -1230,53 +1139,15 @@ def tutorial_table(rows):
     print(text)
 
 
-def tutorial_profile(tut):
-    """perf profiles of one more serial run of each variant (the cases of
-    the last round): the model's own share of the run"""
-    if not shutil.which("perf"):
-        print("perf not found: no tutorial profile")
-        return
-    for variant in TUTORIAL_VARIANTS[::-1]:
-        case = os.path.join(tut, "run", "cost-%s-np1" % variant)
-        if not os.path.isdir(case):
-            continue
-        info = dict(line.split(None, 1) for line in open(
-            os.path.join(case, "caseInfo")).read().splitlines()
-            if line.strip())
-        data = os.path.join(case, "perf.data")
-        try:
-            sh(["perf", "record", "-e", "cpu-clock", "-F", "1000", "-o",
-                data, SOLVER], case, "log.perf")
-        except subprocess.CalledProcessError:
-            print("perf record failed (see %s/log.perf): no profile" % case)
-            return
-        out = [subprocess.run(
-            ["perf", "report", "-i", data, "--stdio", "--no-children",
-             "--sort", sort, "--percent-limit", "0.3"],
-            capture_output=True, text=True).stdout for sort in ("dso", "sym")]
-        path = os.path.join(bc.RESULTS,
-                            "openfoam-tutorial-profile-%s.txt" % variant)
-        with open(path, "w") as f:
-            f.write("# perf record -e cpu-clock %s: tutorial, %s, %s "
-                    "parcels, %s s, serial\n" % (
-                        SOLVER, variant, info["nParcels"].strip(),
-                        info["endTime"].strip()))
-            f.write("\n".join(out))
-        print("wrote " + path)
-
-
 def tutorial_cost(args):
-    """The tutorial's short case with the smooth (standardWallInteraction)
-    and a rough wall model, same parcels and time steps, alternated, serial
-    and on MPI ranks (--ranks); then perf profiles of the serial runs"""
+    """The tutorial's short case with OpenFOAM's wall model and the
+    library's smooth and rough walls, same parcels and time steps,
+    alternated"""
     if args.plot_only:
         tutorial_table(bc.read_csv(TUTORIAL_CSV))
         return
-    rows, tut = tutorial_measure(args)
+    rows, _ = tutorial_measure(args)
     tutorial_table(rows)
-    tutorial_profile(tut)
-
-
 
 
 def plot_only(args):
@@ -1330,24 +1201,20 @@ def main():
     p.add_argument("--profile", action="store_true",
                    help="only: perf profiles of the rough and standard runs")
     p.add_argument("--tutorial", action="store_true",
-                   help="only (openfoam1912): the tutorial's short case, "
-                   "smooth against\nrough2.5, alternated, on each of --ranks "
-                   "MPI ranks, then perf\nprofiles of the serial runs")
-    p.add_argument("--ranks", default="1,2",
-                   help="--tutorial: MPI rank counts (default 1,2)")
+                   help="only (openfoam13): the tutorial's short case, "
+                   "standard, smooth\nand rough2.5, alternated, serial")
     p.add_argument("--plot-only", action="store_true")
     args = p.parse_args()
     args.parcels = [int(float(x)) for x in args.parcels.split(",")]
-    args.ranks = sorted({int(x) for x in args.ranks.split(",")})
     if args.quick:
         args.parcels, args.rounds, args.end_time = [500, 5000], 2, 0.05
         args.parcel_seconds = 0
         args.callgrind_parcels, args.callgrind_end_time = 500, 0.02
     bc.ensure_dirs()
     if args.tutorial:
-        if args.platform != "openfoam1912" and not args.plot_only:
-            sys.exit("openfoamCost.py --tutorial: the tutorial's case is "
-                     "v1912's (--platform openfoam1912)")
+        if args.platform != "openfoam13" and not args.plot_only:
+            sys.exit("openfoamCost.py --tutorial: the tutorial is "
+                     "OpenFOAM-13's (--platform openfoam13)")
         tutorial_cost(args)
         return
     if args.plot_only:
