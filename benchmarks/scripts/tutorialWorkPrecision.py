@@ -234,10 +234,10 @@ def figure(a):
             ("up_diff", "up_se", "o", "C2", "upper-half fraction"),
             ("uy_diff", "uy_se", "^", "C3", "rms wall-normal velocity"),
             ("conc_diff", "conc_se", "s", "C4", "concentration (RMS)")):
-        ax.loglog(x, [max(p[key], 1e-5) for p in pts], marker + "-",
-                  color=color, label="|%s - ref|" % text)
-        ax.loglog(x, [p[se] for p in pts], marker + ":", color=color,
-                  label="its combined s.e.")
+        ax.semilogy(x, [max(p[key], 1e-5) for p in pts], marker + "-",
+                    color=color, label="|%s - ref|" % text)
+        ax.semilogy(x, [p[se] for p in pts], marker + ":", color=color,
+                    label="its combined s.e.")
     for p in pts:
         ax.annotate(p["label"], (p["cpu"], p["conc_diff"]), fontsize=6,
                     textcoords="offset points", xytext=(3, 3))
