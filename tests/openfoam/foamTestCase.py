@@ -753,6 +753,18 @@ class MeshGeometry:
         return xyz
 
 
+def significant_digits(numbers):
+    """The most significant digits among numbers written as text (a file's
+    writePrecision, where one of its numbers uses them all)"""
+    most = 1
+    for group in numbers:
+        for text in group:
+            mantissa = re.split(r"[eE]", text.lstrip("+-"))[0]
+            digits = mantissa.replace(".", "").lstrip("0")
+            most = max(most, len(digits))
+    return most
+
+
 def read_positions(root, cloud_dir):
     """Cartesian positions (n, 3) and cells (n,) of the parcels in
     cloud_dir (of the case or processor folder root): v1912's 'positions'
@@ -773,8 +785,10 @@ def read_positions(root, cloud_dir):
     cells = np.array([int(r[4]) for r in rows])
     faces = np.array([int(r[5]) for r in rows])
     tets = np.array([int(r[6]) for r in rows])
-    check(bool(np.all(np.abs(coords.sum(axis=1) - 1) < 1e-9)
-               and np.all(coords > -1e-9)),
+    # the coordinates as written: round-off of the file's writePrecision
+    tol = max(1e-9, 4*10.0**(1 - significant_digits(r[:4] for r in rows)))
+    check(bool(np.all(np.abs(coords.sum(axis=1) - 1) < tol)
+               and np.all(coords > -tol)),
           "%s: barycentric coordinates of every parcel in [0, 1] summing to 1"
           % os.path.relpath(cloud_dir, os.path.dirname(root)))
     mesh = MeshGeometry(os.path.join(root, "constant", "polyMesh"))
