@@ -77,12 +77,18 @@ spin-up + 1 s sampled, dt = 1 ms; --quick: 500 parcels, 0.2 s + 0.2 s),
 each variant run by its own Allrun (tutorialWorkPrecision.run_config), with
 OpenFOAM's standardWallInteraction (standard) and the library's smooth and
 rough2.5 walls, alternated round by round, serial (the tutorial has no
-parallel option). Writes benchmarks/results/openfoam-tutorial-cost.csv and
-.md.
+parallel option); with --baseline-lib also rough2.5-base (rough2.5 with
+that library: before/after); with --variant-lib-path instead standard and
+rough2.5 with and without those libraries. Writes
+benchmarks/results/openfoam-tutorial-cost[.tag].csv and .md.
 
---lib-path DIR: DIR first on LD_LIBRARY_PATH for every variant (e.g. an
-OpenFOAM-13 liblagrangianParcel.so compiled at -O3: benchmarks/run
---parcel-o3); give the results another --tag.
+--lib-path DIR: DIR first on LD_LIBRARY_PATH for every variant; give the
+results another --tag.
+
+--variant-lib-path DIR: also the variants standard.lib and rough.lib (the
+tutorial: standard.lib, rough2.5.lib), standard and rough with DIR first on
+LD_LIBRARY_PATH, alternated with the others (benchmarks/run --openfoam-o3:
+OpenFOAM-13's hot libraries at -O3 against the project's -O1 build).
 """
 import argparse
 import collections
@@ -110,9 +116,12 @@ U0 = (40.0, 27.0, 13.0)
 DIAMETER = 110e-6
 VARIANTS = ("standard", "rebound", "rough")
 BASE = "rough-base"
+# --variant-lib-path: standard and rough again with other libraries first
+LIB_VARIANTS = ("standard.lib", "rough.lib")
 # the wall model file of each variant (constant/wallModel.<file>)
 MODEL_FILE = {"standard": "standard", "rebound": "rebound", "rough": "rough",
-              BASE: "rough", "specular": "specular"}
+              BASE: "rough", "specular": "specular",
+              "standard.lib": "standard", "rough.lib": "rough"}
 # x of the low corner of each box: the single box, and the two disjoint
 # boxes of the MPI comparison (a gap of one box length between them)
 ONE_BOX = (0.0,)
@@ -124,7 +133,7 @@ PLATFORM_NAMES = {"openfoam13": "OpenFOAM-13", "openfoam1912": "OpenFOAM v1912"}
 def variants_of(rows):
     """The variants present in rows, in the order of VARIANTS (+ BASE)"""
     present = {r["variant"] for r in rows}
-    return [v for v in VARIANTS + (BASE,) if v in present]
+    return [v for v in VARIANTS + (BASE,) + LIB_VARIANTS if v in present]
 
 
 class Runner:
@@ -136,13 +145,18 @@ class Runner:
         self.lib_path = [os.path.abspath(d) for d in args.lib_path]
         self.baseline = os.path.abspath(args.baseline_lib) \
             if args.baseline_lib else None
-        self.variants = VARIANTS + ((BASE,) if self.baseline else ())
+        self.variant_lib_path = [os.path.abspath(d)
+                                 for d in args.variant_lib_path]
+        self.variants = VARIANTS + ((BASE,) if self.baseline else ()) \
+            + (LIB_VARIANTS if self.variant_lib_path else ())
 
     def library_dirs(self, variant):
         """Directories put first on LD_LIBRARY_PATH for a variant"""
         dirs = list(self.lib_path)
         if variant == BASE:
             dirs.insert(0, self.baseline)
+        if variant in LIB_VARIANTS:
+            dirs = self.variant_lib_path + dirs
         return dirs
 
     def result(self, stem, ext):
@@ -431,7 +445,7 @@ def measure(runner, args):
         for rnd in range(args.rounds):
             for np, variant in (runs if rnd % 2 == 0 else runs[::-1]):
                 r = run(runner, cases[np], variant)
-                hits = r["hits"] if variant in ("rough", BASE) \
+                hits = r["hits"] if MODEL_FILE[variant] == "rough" \
                     else smooth_hits
                 row = dict(platform=runner.platform.name, tag=runner.tag,
                            baseline=runner.baseline or "",
@@ -592,7 +606,7 @@ def two_box_table(rows):
                         % (v, n, len(cpu), median_range(cpu, 2),
                            median_range(wall, 2),
                            statistics.median(of(v, n, "process_cpu")), h,
-                           "" if v in ("rough", BASE) else " (exact)",
+                           "" if MODEL_FILE[v] == "rough" else " (exact)",
                            "%.2f" % (h/c/1e6) if c > 0 else "-",
                            h/w/1e6))
     others = [v for v in variants if v != "standard"]
@@ -626,10 +640,17 @@ def two_box_table(rows):
     return text
 
 
+def baseline_name(path):
+    """The revision of a baseline library's directory
+    (build/benchmarks/baseline-<rev>/lib/...), else the path"""
+    m = re.search(r"baseline-(\w+)", path or "")
+    return m.group(1) if m else (path or "")
+
+
 def command_of(tag, platform, baseline=""):
     """The benchmarks/run command of a result (baseline: the directory of
     the rough-base library, build/benchmarks/baseline-<rev>/lib/...)"""
-    extra = " --parcel-o3" if tag.endswith("parcelO3") else ""
+    extra = " --openfoam-o3" if tag.endswith("-O3") else ""
     m = re.search(r"baseline-(\w+)", baseline or "")
     if m:
         extra += " --baseline " + m.group(1)
@@ -653,7 +674,7 @@ def table(tag, summary, rows):
     lines = head + [
         "| parcels | simulated s (steps) | standard: CPU s, hits, Mhits/s | "
         + " | ".join("%s: CPU s%s" % (v, ", hits, Mhits/s"
-                                      if v in ("rough", BASE) else "")
+                                      if MODEL_FILE[v] == "rough" else "")
                      for v in others)
         + " | " + " | ".join("%s/standard CPU (median, min-max of rounds)"
                              % v for v in others)
@@ -669,7 +690,8 @@ def table(tag, summary, rows):
             x = m[v]
             cells.append("%.2f, %d, %.2f" % (x["step_cpu"], x["hits"],
                                              x["hits"]/x["step_cpu"]/1e6)
-                         if v in ("rough", BASE) else "%.2f" % x["step_cpu"])
+                         if MODEL_FILE[v] == "rough"
+                         else "%.2f" % x["step_cpu"])
         cells += [median_range(s["ratios"][v]) for v in others]
         cells.append(median_range(s["extra"], 0))
         ro = m["rough"]
@@ -688,9 +710,12 @@ def table(tag, summary, rows):
         lines += ["", "OpenFOAM-13 is the project's own build, compiled at "
                   "-O1 (docs/openfoam13.md; %s); libroughWallInteraction.so "
                   "is -O3 on both platforms, v1912 is Debian's -O3 build." % (
-                      "here with liblagrangianParcel.so compiled at -O3 "
-                      "first on LD_LIBRARY_PATH"
-                      if tag.endswith("parcelO3") else
+                      "standard.lib and rough.lib here with OpenFOAM-13's "
+                      "libOpenFOAM, libmeshTools, libfiniteVolume, "
+                      "libtracking, liblagrangian and liblagrangianParcel "
+                      "compiled at OpenFOAM's -O3 first on LD_LIBRARY_PATH, "
+                      "the other variants with the -O1 build"
+                      if tag.endswith("-O3") else
                       "the tracking, the cloud and the parcel library run at "
                       "-O1")]
     lines += two_box_table(rows)
@@ -709,10 +734,11 @@ def figure(summaries):
     import matplotlib.pyplot as plt
     fig, axes = plt.subplots(1, 2, figsize=(11, 4))
     styles = ["-", "--", ":", "-."]
-    colours = {"standard": "k", "rebound": "C1", "rough": "C0", BASE: "C2"}
+    colours = {"standard": "k", "rebound": "C1", "rough": "C0", BASE: "C2",
+               "standard.lib": "C7", "rough.lib": "C4"}
     for (tag, summary), ls in zip(sorted(summaries.items()), styles):
         serial = [s for s in summary if s["np"] == 1 and s["mesh"] == "box"]
-        if not serial:
+        if len(serial) < 2:     # a single parcel count: no line to draw
             continue
         n = [s["parcels"] for s in serial]
         for v in serial[0]["med"]:
@@ -916,7 +942,7 @@ def callgrind(runner, args):
                       "--callgrind-out-file=" + out, case.solver],
                      "log.callgrind." + variant, timeout=3600)
         steps = case.read_steps("log.callgrind." + variant)
-        hits = steps[-1]["hits"] if variant in ("rough", BASE) else specular
+        hits = steps[-1]["hits"] if MODEL_FILE[variant] == "rough" else specular
         total, calls, parts, callees = callgrind_profile(
             out, MODEL_ENTRY[variant])
         row = dict(platform=runner.platform.name, tag=runner.tag,
@@ -1002,23 +1028,53 @@ def callgrind_table(tag, rows):
     print(text)
 
 
+#: Symbols of the patch interaction models' own work in a perf profile:
+#: the rough model is all of libroughWallInteraction.so and, on v1912, the
+#: out-of-line Random::sample01 it calls; standardWallInteraction is its
+#: correct(); both call the cloud's patchData (OpenFOAM's)
+PROFILE_MODEL = {
+    "rough": lambda dso, sym: dso.startswith("libroughWallInteraction")
+    or "Random::sample01" in sym,
+    "standard": lambda dso, sym: "StandardWallInteraction" in sym,
+}
+
+
+def perf_shares(data):
+    """[(percent, dso, symbol)] of a perf.data file (self time)"""
+    out = subprocess.run(
+        ["perf", "report", "-i", data, "--stdio", "--no-children",
+         "--sort", "dso,sym", "--percent-limit", "0"],
+        capture_output=True, text=True).stdout
+    rows = []
+    for line in out.splitlines():
+        m = re.match(r"\s*([0-9.]+)%\s+(\S+)\s+\[.\]\s+(.*)$", line)
+        if m:
+            rows.append((float(m.group(1)), m.group(2), m.group(3).strip()))
+    return rows
+
+
 def profile(runner, args):
     """perf (software clock) profiles of the rough and the standard run of
-    the middle parcel count: where the extra time of the rough wall goes"""
+    the middle parcel count: where the extra time of the rough wall goes,
+    and the time per wall hit in the models' own code (their share of the
+    samples times the run's CPU time over its hits)"""
     if not shutil.which("perf"):
         print("perf not found: no profile")
         return
     work = os.path.abspath(os.path.join(args.work, runner.tag, "profile"))
     os.makedirs(work, exist_ok=True)
     parcels = args.parcels[min(1, len(args.parcels) - 1)]
-    case, _ = make_case(runner, work, parcels, 1, args.end_time)
+    end_time = max(args.end_time, args.parcel_seconds/parcels)
+    case, positions = make_case(runner, work, parcels, 1, end_time)
+    summary = []
     for variant in ("rough", "standard"):
         shutil.copy(case.file("constant/wallModel." + variant),
                     case.file("constant/wallModel"))
         data = case.file("perf.%s.data" % variant)
+        log = "log.perf." + variant
         with library_path(runner.library_dirs(variant)):
             case.run(["perf", "record", "-e", "cpu-clock", "-F", "2000",
-                      "-o", data, case.solver], "log.perf." + variant)
+                      "-o", data, case.solver], log)
         out = []
         for sort in ("dso", "sym"):
             out.append(subprocess.run(
@@ -1032,6 +1088,44 @@ def profile(runner, args):
                     % (case.solver, parcels, variant, runner.tag))
             f.write("\n".join(out))
         print("wrote " + path)
+        steps = case.read_steps(log)
+        cpu = steps[-1]["executionTime"]
+        hits = steps[-1]["hits"] if variant == "rough" else specular_hits(
+            positions, travel_time(runner.platform, end_time))
+        shares = perf_shares(data)
+        model = sum(p for p, dso, sym in shares
+                    if PROFILE_MODEL[variant](dso, sym))
+        patch = sum(p for p, dso, sym in shares if "::patchData(" in sym)
+        summary.append(dict(variant=variant, hits=hits, cpu=cpu,
+                            model_percent=model, patchData_percent=patch,
+                            model_ns=model/100*cpu/hits*1e9,
+                            patchData_ns=patch/100*cpu/hits*1e9))
+    lines = ["%s (%s), perf record -e cpu-clock -F 2000 of `%s`, the box "
+             "with %d parcels, %g s (`%s`, its `--profile` step): the "
+             "models' own code per wall hit = its share of the samples x "
+             "the run's CPU time (last ExecutionTime) / the run's wall "
+             "hits." % (PLATFORM_NAMES[runner.platform.name], runner.tag,
+                        case.solver, parcels, end_time,
+                        command_of(runner.tag, runner.platform.name)), "",
+             "| variant | wall hits | CPU [s] | model's own code: share, "
+             "ns per hit | patchData (OpenFOAM, both): share, ns per hit |",
+             "|---|---|---|---|---|"]
+    for r in summary:
+        lines.append("| %s | %d | %.2f | %.1f %%, %.0f | %.1f %%, %.0f |" % (
+            r["variant"], r["hits"], r["cpu"], r["model_percent"],
+            r["model_ns"], r["patchData_percent"], r["patchData_ns"]))
+    lines += ["", "rough: all of libroughWallInteraction.so (the adapter and "
+              "the core, inlined into it)%s; standard: "
+              "StandardWallInteraction::correct." % (
+                  " and OpenFOAM's Random::sample01 it calls"
+                  if not runner.platform.foundation else ""),
+              "Extra per rough hit in the models' own code: %.0f ns." % (
+                  summary[0]["model_ns"] - summary[1]["model_ns"])]
+    text = "\n".join(lines) + "\n"
+    with open(os.path.join(bc.RESULTS, "openfoam-profile.%s.md"
+                           % runner.tag), "w") as f:
+        f.write(text)
+    print(text)
 
 
 # ---------------------------------------------------------------------------
@@ -1044,7 +1138,16 @@ def profile(runner, args):
 #: Delta = 2.5 deg (both with the library's spin models, as the tutorial
 #: runs them)
 TUTORIAL_VARIANTS = ("standard", "smooth", "rough2.5")
-TUTORIAL_CSV = "openfoam-tutorial-cost.csv"
+#: rough2.5 with --baseline-lib's library (the before of a before/after)
+TUTORIAL_BASE = "rough2.5-base"
+#: standard and rough2.5 with --variant-lib-path's libraries first
+TUTORIAL_LIB_VARIANTS = ("standard.lib", "rough2.5.lib")
+
+
+def tutorial_stem(tag):
+    """Name of the tutorial's results in benchmarks/results (without .csv,
+    .md): openfoam-tutorial-cost[.tag]"""
+    return "openfoam-tutorial-cost" + ("." + tag if tag else "")
 
 
 def tutorial_measure(args):
@@ -1053,19 +1156,32 @@ def tutorial_measure(args):
     tutorial has no parallel option), the order reversed every other round;
     returns the rows"""
     import tutorialWorkPrecision as tw
-    bc.write_machine("openfoam-tutorial-cost")
+    bc.write_machine(tutorial_stem(args.tag))
     work = os.path.abspath(os.path.join(args.work, "tutorial"))
     os.makedirs(work, exist_ok=True)
     tut = tw.prepare(work)
     parcels, spin_up, sampling = (500, 0.2, 0.2) if args.quick \
         else (4000, 1.0, 1.0)
+    # variant: (the tutorial's wall model, directories first on
+    # LD_LIBRARY_PATH; the Allrun runs in this environment)
+    variants = {v: (v, []) for v in TUTORIAL_VARIANTS}
+    if args.baseline_lib:
+        variants[TUTORIAL_BASE] = ("rough2.5",
+                                   [os.path.abspath(args.baseline_lib)])
+    if args.variant_lib_path:
+        # other OpenFOAM libraries: standard and rough2.5 with and without
+        dirs = [os.path.abspath(d) for d in args.variant_lib_path]
+        variants = {v: (v.replace(".lib", ""), dirs if ".lib" in v else [])
+                    for v in ("standard", "rough2.5") + TUTORIAL_LIB_VARIANTS}
+    order = list(variants)
     rows = []
     for rnd in range(args.rounds):
-        for variant in (TUTORIAL_VARIANTS if rnd % 2 == 0
-                        else TUTORIAL_VARIANTS[::-1]):
+        for variant in (order if rnd % 2 == 0 else order[::-1]):
             name = "cost-%s-%d" % (variant, rnd)
-            summary, _ = tw.run_config(tut, name, variant, parcels, spin_up,
-                                       sampling, 1e-3)
+            config, dirs = variants[variant]
+            with library_path(dirs):
+                summary, _ = tw.run_config(tut, name, config, parcels,
+                                           spin_up, sampling, 1e-3)
             row = dict(round=rnd, variant=variant, parcels=parcels,
                        spin_up=spin_up, sampling=sampling,
                        cpu="%.2f" % float(summary["cpuTime"]),
@@ -1073,16 +1189,20 @@ def tutorial_measure(args):
                        hits_lower=summary.get(
                            "hitsPerParcelPerMetre_lowerWall", ""),
                        upperFraction=summary["upperFraction"],
+                       baseline=baseline_name(args.baseline_lib)
+                       if variant == TUTORIAL_BASE else "",
+                       lib_path=":".join(variants[variant][1]),
                        load=open("/proc/loadavg").read().split()[0])
             rows.append(row)
             print(row, flush=True)
-    bc.write_csv(TUTORIAL_CSV, rows)
+    bc.write_csv(tutorial_stem(args.tag) + ".csv", rows)
     return rows, tut
 
 
-def tutorial_table(rows):
+def tutorial_table(rows, tag=None):
     """Medians per variant and the paired ratios to standard and smooth"""
-    variants = [v for v in TUTORIAL_VARIANTS
+    variants = [v for v in TUTORIAL_VARIANTS + (TUTORIAL_BASE,)
+                + TUTORIAL_LIB_VARIANTS
                 if any(r["variant"] == v for r in rows)]
 
     def of(variant, key):
@@ -1122,7 +1242,9 @@ def tutorial_table(rows):
     text += ["", "| ratio of the solver CPU, paired rounds | median "
              "(range) |", "|---|---|"]
     for a, b in (("rough2.5", "standard"), ("smooth", "standard"),
-                 ("rough2.5", "smooth")):
+                 ("rough2.5", "smooth"), ("rough2.5", TUTORIAL_BASE),
+                 ("standard.lib", "standard"),
+                 ("rough2.5.lib", "rough2.5")):
         if a in variants and b in variants:
             text.append("| %s/%s | %s |" % (a, b,
                                             median_range(paired(a, b))))
@@ -1132,8 +1254,20 @@ def tutorial_table(rows):
              "rough2.5 run the library's patch interaction model and its "
              "spin models (rotational lift, fluid torque), so "
              "rough2.5/smooth is the rough wall alone."]
+    lib = [r.get("lib_path", "") for r in rows
+           if r["variant"] in TUTORIAL_LIB_VARIANTS]
+    if lib:
+        text += ["", "standard.lib, rough2.5.lib: the same with %s first on "
+                 "LD_LIBRARY_PATH." % lib[0]]
+    base = [r.get("baseline", "") for r in rows
+            if r["variant"] == TUTORIAL_BASE]
+    if base:
+        text += ["", "%s: rough2.5 with the library of %s first on "
+                 "LD_LIBRARY_PATH (the same case, parcels and time steps): "
+                 "rough2.5/%s is the run time after against before." % (
+                     TUTORIAL_BASE, base[0], TUTORIAL_BASE)]
     text = "\n".join(text) + "\n"
-    with open(os.path.join(bc.RESULTS, "openfoam-tutorial-cost.md"),
+    with open(os.path.join(bc.RESULTS, tutorial_stem(tag) + ".md"),
               "w") as f:
         f.write(text)
     print(text)
@@ -1144,10 +1278,11 @@ def tutorial_cost(args):
     library's smooth and rough walls, same parcels and time steps,
     alternated"""
     if args.plot_only:
-        tutorial_table(bc.read_csv(TUTORIAL_CSV))
+        tutorial_table(bc.read_csv(tutorial_stem(args.tag) + ".csv"),
+                       args.tag)
         return
     rows, _ = tutorial_measure(args)
-    tutorial_table(rows)
+    tutorial_table(rows, args.tag)
 
 
 def plot_only(args):
@@ -1193,6 +1328,9 @@ def main():
                    "DIR's\nlibroughWallInteraction.so")
     p.add_argument("--lib-path", metavar="DIR", action="append", default=[],
                    help="DIR first on LD_LIBRARY_PATH for every variant")
+    p.add_argument("--variant-lib-path", metavar="DIR", action="append",
+                   default=[], help="also run standard.lib and rough.lib: "
+                   "standard and rough\nwith DIR first on LD_LIBRARY_PATH")
     p.add_argument("--quick", action="store_true")
     p.add_argument("--callgrind", action="store_true",
                    help="only: instruction counts of a short run per variant")
