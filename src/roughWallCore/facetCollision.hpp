@@ -46,10 +46,7 @@ enum class Regime { noSlip, sliding };
 //  reverses (only possible for muD > mu0, which the adapters reject): energy
 //  can then never grow, whatever the input.
 template<bool withSpin>
-#if defined(__GNUC__)
-[[gnu::always_inline]]
-#endif
-inline Regime collideWithFacet
+Regime collideWithFacet
 (
     Vec3& v,
     Vec3& w,

@@ -76,10 +76,7 @@ constexpr double minReciprocalDelta = 1e-300;
 //  as a product, which, unlike the division, does not hold up the sampler
 //  once alpha is known
 template<class Uniform01>
-#if defined(__GNUC__)
-[[gnu::always_inline]]
-#endif
-inline double sampleFacetTilt
+double sampleFacetTilt
 (
     double alpha,
     double Delta,
@@ -152,15 +149,9 @@ Vec3 randomWallTangent
 }
 
 //- Plane of incidence of a velocity moving into the wall. direction is the
-//  velocity or any positive multiple of it. Inlined into the operator like
-//  sampleFacetTilt and collideWithFacet (GCC kept the three out of line:
-//  the calls and the vectors passed through memory were 6 % of a hit's
-//  instructions)
+//  velocity or any positive multiple of it.
 template<class Uniform01>
-#if defined(__GNUC__)
-[[gnu::always_inline]]
-#endif
-inline IncidenceFrame incidenceFrame
+IncidenceFrame incidenceFrame
 (
     const Vec3& direction,
     const Vec3& wallNormal,
