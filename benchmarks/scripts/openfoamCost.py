@@ -711,8 +711,9 @@ def table(tag, summary, rows):
                   "-O1 (docs/openfoam13.md; %s); libroughWallInteraction.so "
                   "is -O3 on both platforms, v1912 is Debian's -O3 build." % (
                       "standard.lib and rough.lib here with OpenFOAM-13's "
-                      "libOpenFOAM, libmeshTools, libfiniteVolume, "
-                      "libtracking, liblagrangian and liblagrangianParcel "
+                      "libOpenFOAM, libmeshTools, libtracking, "
+                      "liblagrangian and liblagrangianParcel (not "
+                      "libfiniteVolume) "
                       "compiled at OpenFOAM's -O3 first on LD_LIBRARY_PATH, "
                       "the other variants with the -O1 build"
                       if tag.endswith("-O3") else
