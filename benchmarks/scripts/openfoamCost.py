@@ -651,9 +651,8 @@ def command_of(tag, platform, baseline=""):
     """The benchmarks/run command of a result (baseline: the directory of
     the rough-base library, build/benchmarks/baseline-<rev>/lib/...)"""
     extra = " --openfoam-o3" if tag.endswith("-O3") else ""
-    m = re.search(r"baseline-(\w+)", baseline or "")
-    if m:
-        extra += " --baseline " + m.group(1)
+    if baseline:
+        extra += " --baseline " + baseline_name(baseline)
     return "benchmarks/run --platform %s%s openfoam" % (platform, extra)
 
 
