@@ -88,7 +88,7 @@ void Foam::RoughWallInteraction<CloudType>::rebound
     parcelType& p,
     const polyPatch& pp,
     const roughWallPatchData& data
-) const
+)
 {
     // standardWallInteraction's rebound, term for term
     vector& U = p.U();
@@ -96,6 +96,7 @@ void Foam::RoughWallInteraction<CloudType>::rebound
     vector nw;
     vector Up;
     this->owner().patchData(p, pp, nw, Up);
+    watchWallVelocity(pp.index(), Up);
 
     // Calculate motion relative to patch velocity
     U -= Up;
@@ -128,6 +129,7 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
     vector nw;
     vector Up;
     this->owner().patchData(p, pp, nw, Up);
+    watchWallVelocity(pp.index(), Up);
 
     // From here on the core's vectors, relative to the wall. The core's wall
     // normal points into the fluid, OpenFOAM's out of it
@@ -243,6 +245,47 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
 
 
 template<class CloudType>
+void Foam::RoughWallInteraction<CloudType>::reportWallVelocity(Ostream& os)
+{
+    scalarList speedSqr(wallSpeedSqr_);
+    Pstream::listCombineGather(speedSqr, maxEqOp<scalar>());
+    Pstream::listCombineScatter(speedSqr);
+
+    forAll(speedSqr, patchi)
+    {
+        const scalar reported = wallSpeedSqrReported_[patchi];
+
+        // A first hit, or a wall faster than reported by more than 1 %
+        if (speedSqr[patchi] < 0 || speedSqr[patchi] <= reported*sqr(1.01))
+        {
+            continue;
+        }
+        wallSpeedSqrReported_[patchi] = speedSqr[patchi];
+
+        const word& name = patches_.name(patchi);
+        const scalar speed = sqrt(speedSqr[patchi]);
+
+        os  << "    Wall velocity (patchData) of patch " << name.c_str()
+            << ": largest speed " << speed << " m/s"
+            << (speed > 0 ? ", the wall moves" : ", at rest") << nl;
+
+        if (speed > 0)
+        {
+            WarningInFunction
+                << "Patch " << name << " moves: the cloud hands "
+                << typeName << " a wall velocity of up to " << speed
+                << " m/s there, and the parcels rebound from the moving"
+                << " wall. A fixedValue velocity condition on a wall patch"
+                << " is the wall's own velocity to a cloud. If the wall is"
+                << " at rest, give the velocity a condition that fixes no"
+                << " non-zero value there (noSlip, slip, zeroGradient,"
+                << " calculated)." << endl;
+        }
+    }
+}
+
+
+template<class CloudType>
 void Foam::RoughWallInteraction<CloudType>::checkCoeffsKeywords() const
 {
     // Settings put at the wrong level (e.g. e or lateralTilt outside the
@@ -280,7 +323,9 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
     PatchInteractionModel<CloudType>(dict, cloud, typeName),
     patches_(this->coeffDict(), cloud.mesh()),
     stats_(patches_.nNonProcessor()),
-    file_()
+    file_(),
+    wallSpeedSqr_(patches_.nNonProcessor(), scalar(-1)),
+    wallSpeedSqrReported_(patches_.nNonProcessor(), scalar(-1))
 {
     if (patches_.anyRough())
     {
@@ -331,7 +376,9 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
     PatchInteractionModel<CloudType>(pim),
     patches_(pim.patches_),
     stats_(pim.stats_),
-    file_()
+    file_(),
+    wallSpeedSqr_(pim.wallSpeedSqr_),
+    wallSpeedSqrReported_(pim.wallSpeedSqrReported_)
 {}
 
 
@@ -435,6 +482,8 @@ void Foam::RoughWallInteraction<CloudType>::info(Ostream& os)
         patches_,
         this->owner().mesh().time()
     );
+
+    reportWallVelocity(os);
 
     if (this->writeTime())
     {

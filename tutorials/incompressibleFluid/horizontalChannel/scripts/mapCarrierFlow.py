@@ -13,7 +13,16 @@ radius from the real wall, and the parcel feels the air there.
 
 Writes 0/U, 0/k, 0/omega, 0/nut of the tracking case from its templates
 (the case's 0/ files): the internal field, and on each wall the value at
-y = r and y = H - r.
+y = r and y = H - r as a `calculated` condition.
+
+Why `calculated` and not `fixedValue`: the cloud takes a fixed-value
+velocity on a wall patch as the velocity of the wall itself
+(MomentumCloud::patchData), so a fixed u(r) would make every wall slide
+downstream at u(r). A `calculated` patch fixes nothing: patchData hands the
+wall model a wall at rest, while the interpolation to the parcel centre
+(cellPoint: cell centres and the points, whose values on the wall come from
+the patch faces) still sees the air at y = r near the wall. The other
+fields get the same condition so that no wall value looks imposed.
 
 Usage: mapCarrierFlow.py CARRIER_CASE CARRIER_TIME TRACKING_CASE DIAMETER
 """
@@ -64,7 +73,7 @@ def write_field(case, name, values, walls, diameter):
     if n != 1:
         raise RuntimeError(path + ": no uniform internalField to replace")
     block = "".join(
-        "    %s\n    {\n        type            fixedValue;\n"
+        "    %s\n    {\n        type            calculated;\n"
         "        value           uniform %s;\n    }\n\n" % (wall, fmt(v))
         for wall, v in zip(tc.WALLS, walls))
     text, n = re.subn(r'    "\(lowerWall\|upperWall\)"\s*\{[^}]*\}\s*\n',
