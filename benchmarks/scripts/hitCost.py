@@ -10,6 +10,7 @@ instructions per hit under callgrind (hitLoop at two hit counts; needs
 valgrind) into benchmarks/results/hit-instructions.{csv,md}.
 """
 import argparse
+import json
 import os
 import re
 import shutil
@@ -31,8 +32,9 @@ CONFIGS = [  # (label, spin, lateral, dim)
 ALPHAS = ["mix", "1", "5", "15", "45", "85"]
 DELTAS = ["0", "2", "8", "20", "45"]
 # The core before the speed work of issue 7 (libm's atan2/sincos/log1p,
-# Box-Muller proposals, a second normalisation of the tangent), measured on
-# the same machine at commit 22b71b2 and kept for the comparison
+# Box-Muller proposals, a second normalisation of the tangent), measured at
+# commit 22b71b2 (on the machine its hit-cost.machine.json names) and kept
+# for the comparison
 BASELINE = "baseline-22b71b2"
 
 
@@ -149,9 +151,16 @@ def markdown(rows, machine):
 
     base = baseline("hit-cost.csv", "name")
     if base:
+        try:
+            with open(os.path.join(bc.RESULTS, BASELINE,
+                                   "hit-cost.machine.json")) as f:
+                where = "on an %s" % json.load(f)["Model name"]
+        except (OSError, KeyError, ValueError):
+            where = "on a machine not recorded"
         out.append("Against the core before the speed work (commit 22b71b2, "
-                   "measured then on the same machine: %s), alpha ~ U(0, 90 "
-                   "deg) [ns per hit, before -> now (speed-up)]:\n" % BASELINE)
+                   "measured then %s: %s; the factors include the change of "
+                   "machine), alpha ~ U(0, 90 deg) [ns per hit, before -> "
+                   "now (speed-up)]:\n" % (where, BASELINE))
         out.append("| configuration | " + " | ".join(
             "Delta = %s deg" % d for d in DELTAS) + " |")
         out.append("|---|" + "---|"*len(DELTAS))

@@ -288,6 +288,11 @@ def main():
         info = bc.write_machine("tutorial")
         print(bc.machine_markdown(info))
         measure(args)
+    elif not os.path.exists(os.path.join(bc.RESULTS,
+                                         "tutorial-work-precision.csv")):
+        print("tutorialWorkPrecision: no stored results "
+              "(benchmarks/run tutorial measures them)")
+        return
     rows = load()
     table(rows)
     figure(analyse(rows))
