@@ -123,6 +123,16 @@ TOL_SPIN = 1e-6
 # The oracle
 # ---------------------------------------------------------------------------
 
+def cross(a, b):
+    """a x b of 3-vectors (np.cross is slow on single vectors)."""
+    return np.array([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                     a[0] * b[1] - a[1] * b[0]])
+
+
+def norm(a):
+    return math.sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2])
+
+
 def fluid_velocity(x):
     return np.array([G * x[1], 0.0, 0.0])
 
@@ -165,20 +175,20 @@ class Model:
 
     def lift_force(self, d, Urel, Orel):
         """The rotational lift (the papers' forms, see the docstring)."""
-        W, U = np.linalg.norm(Orel), np.linalg.norm(Urel)
+        W, U = norm(Orel), norm(Urel)
         if W == 0 or U == 0:
             return np.zeros(3)
         if self.lift == "RubinowKeller":
-            return math.pi * (d / 2)**3 * RHO_F * np.cross(Orel, Urel)
+            return math.pi * (d / 2)**3 * RHO_F * cross(Orel, Urel)
         Gamma = W * d / (2 * U)
         Rep = U * d / NU_F
         CL = 0.45 + (2 * Gamma - 0.45) \
             * math.exp(-0.075 * Gamma**0.4 * Rep**0.7)
         return 0.5 * RHO_F * math.pi * d * d / 4 * CL * U * U \
-            * np.cross(Orel, Urel) / (W * U)
+            * cross(Orel, Urel) / (W * U)
 
     def torque_value(self, d, Orel):
-        W = np.linalg.norm(Orel)
+        W = norm(Orel)
         ReR = W * d * d / NU_F
         if ReR <= 32:
             return 8 * math.pi * MU_F * (d / 2)**3 * Orel
@@ -186,14 +196,14 @@ class Model:
         return RHO_F / 2 * (d / 2)**5 * CR * W * Orel
 
     def saffman_force(self, d, Urel):
-        Re = np.linalg.norm(Urel) * d / NU_F
-        Rew = np.linalg.norm(CURL) * d * d / NU_F
+        Re = norm(Urel) * d / NU_F
+        Rew = norm(CURL) * d * d / NU_F
         beta = 0.5 * Rew / Re
         alpha = 0.3314 * math.sqrt(beta)
         f = (1 - alpha) * math.exp(-0.1 * Re) + alpha
         Cld = 6.46 * f if Re < 40 else 6.46 * 0.0524 * math.sqrt(beta * Re)
         Cl = 3 / (2 * math.pi * math.sqrt(Rew)) * Cld
-        return mass(d) / RHO_P * RHO_F * Cl * np.cross(Urel, CURL)
+        return mass(d) / RHO_P * RHO_F * Cl * cross(Urel, CURL)
 
     def force(self, d, x, U, omega):
         Urel = fluid_velocity(x) - U
