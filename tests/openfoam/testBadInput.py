@@ -38,9 +38,10 @@ ROUGH = {
 }
 
 
-def settings(rough=None, outlet="outlet { type escape; }", patches=True):
+def settings(rough=None, outlet="outlet { type escape; }", patches=True,
+             coeffs=""):
     """roughWallSettings with the lowerWall/upperWall entry rough (None:
-    remove a keyword) and the outlet entry given."""
+    remove a keyword), the outlet entry given and extra coefficients."""
     entries = dict(ROUGH)
     entries.update(rough or {})
     body = "\n".join("            %-15s %s;" % (k, v)
@@ -59,8 +60,8 @@ patchInteractionModel roughWallInteraction;
 
 roughWallInteractionCoeffs
 {
-%s}
-""" % (patch_list if patches else "")
+%s%s}
+""" % (patch_list if patches else "", coeffs)
 
 
 class Scope:
@@ -149,6 +150,17 @@ CASES = [
     ("patch not covered", settings(outlet=""),
      ["keyword 'patches'", "roughWallInteractionCoeffs",
       "no entry for patch(es) outlet", "not coupled, empty or wedge"]),
+    ("misspelt patch keyword", settings({"lateralTlit": "yes"}),
+     ["keyword 'lateralTlit'", IN_PATCH, "closest: lateralTilt",
+      "not a keyword here"]),
+    ("rebound keyword of rough", settings(outlet="outlet { type rebound; "
+                                          "mu0 0.4; }"),
+     ["keyword 'mu0'", IN_OUTLET, "the keywords of type rebound"]),
+    ("patch setting at coefficient level", settings(coeffs="    e 0.8;\n"),
+     ["keyword 'e'", "roughWallInteractionCoeffs", "closest: patches",
+      "not a keyword here"]),
+    ("velocity name at coefficient level", settings(coeffs="    U U;\n"),
+     ["keyword 'U'", "roughWallInteractionCoeffs", "writeToFile"]),
     ("patches missing", settings(patches=False),
      ["keyword 'patches'", "roughWallInteractionCoeffs", "missing"]),
     ("patches entry without dictionary",

@@ -289,25 +289,18 @@ template<class CloudType>
 void Foam::RoughWallInteraction<CloudType>::checkCoeffsKeywords() const
 {
     // Settings put at the wrong level (e.g. e or lateralTilt outside the
-    // patches entries) would be ignored silently
-    const wordList used{"patches", "writeToFile", "writePrecision", "U"};
-
-    for (const entry& e : this->coeffDict())
-    {
-        bool found = false;
-        for (const word& w : used)
-        {
-            found = found || e.keyword() == w;
-        }
-        if (!found)
-        {
-            IOWarningInFunction(this->coeffDict())
-                << "Keyword '" << e.keyword().c_str() << "' is not used here;"
-                << " used keywords: " << used
-                << ". Settings of a patch go inside its entry of patches."
-                << endl;
-        }
-    }
+    // patches entries) would be ignored silently. (The base class also
+    // reads the name of the velocity field, U, which this model never uses)
+    roughWallInput::checkKeywords
+    (
+        this->coeffDict(),
+        {"patches", "writeToFile", "writePrecision"},
+        string
+        (
+            typeName + "Coeffs (the settings of a patch go inside its entry"
+            " of patches)"
+        )
+    );
 }
 
 

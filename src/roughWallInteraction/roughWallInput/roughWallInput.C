@@ -32,10 +32,39 @@ License
 #include "OStringStream.H"
 #include "foamCompat.H"
 
+#include <algorithm>
+#include <vector>
+
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace
 {
+
+//- Levenshtein distance of two words (for the closest valid keyword)
+std::size_t editDistance(const std::string& a, const std::string& b)
+{
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j)
+    {
+        row[j] = j;
+    }
+    for (std::size_t i = 1; i <= a.size(); ++i)
+    {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j)
+        {
+            const std::size_t above = row[j];
+            row[j] = std::min
+            (
+                {row[j] + 1, row[j - 1] + 1, diagonal + (a[i-1] != b[j-1])}
+            );
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
 
 //- Format a bound: integers without a decimal point, "inf" for no bound
 Foam::string boundText(const Foam::scalar x)
@@ -122,6 +151,56 @@ void Foam::roughWallInput::fatalBadEntry
 
     // exit() does not return; keep [[noreturn]] honest for the compiler
     std::abort();
+}
+
+
+void Foam::roughWallInput::checkKeywords
+(
+    const dictionary& dict,
+    const wordList& used,
+    const string& where
+)
+{
+    for (const entry& e : dict)
+    {
+        const word& key = e.keyword();
+        label closest = -1;
+        std::size_t closestDistance = 0;
+        forAll(used, i)
+        {
+            const std::size_t d = editDistance(key, used[i]);
+            if (d == 0)
+            {
+                closest = -2;
+                break;
+            }
+            if (closest == -1 || d < closestDistance)
+            {
+                closest = i;
+                closestDistance = d;
+            }
+        }
+        if (closest == -2)
+        {
+            continue;
+        }
+
+        OStringStream allowed;
+        allowed << "the keywords of " << where.c_str() << ":";
+        for (const word& w : used)
+        {
+            allowed << " " << w.c_str();
+        }
+        if (closest >= 0)
+        {
+            allowed << " (closest: " << used[closest].c_str() << ")";
+        }
+        fatalBadEntry
+        (
+            dict, key, allowed.str(), "not a keyword here",
+            "'" + entryText(dict, key) + "'"
+        );
+    }
 }
 
 

@@ -43,26 +43,6 @@ const char* const Foam::roughWallPatchData::interactionTypeNames
 };
 
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-
-bool contains(const Foam::wordList& words, const Foam::word& w)
-{
-    for (const Foam::word& x : words)
-    {
-        if (x == w)
-        {
-            return true;
-        }
-    }
-    return false;
-}
-
-} // End anonymous namespace
-
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::roughWallPatchData::readRough(const dictionary& dict)
@@ -175,17 +155,7 @@ void Foam::roughWallPatchData::checkUnusedKeywords
         {}
     }
 
-    for (const entry& e : dict)
-    {
-        if (!contains(used, e.keyword()))
-        {
-            IOWarningInFunction(dict)
-                << "Keyword '" << e.keyword().c_str() << "' is not used by "
-                << "type " << name(type_)
-                << " (patches entry " << patchName_ << "); used keywords: "
-                << used << endl;
-        }
-    }
+    roughWallInput::checkKeywords(dict, used, string("type ") + name(type_));
 }
 
 

@@ -159,29 +159,7 @@ void Foam::spinModelInput::checkKeywords
     const wordList& used
 )
 {
-    for (const entry& e : dict)
-    {
-        bool found = false;
-        for (const word& w : used)
-        {
-            found = found || e.keyword() == w;
-        }
-        if (!found)
-        {
-            OStringStream allowed;
-            allowed << "keywords of " << model.c_str() << ":";
-            for (const word& w : used)
-            {
-                allowed << " " << w.c_str();
-            }
-            roughWallInput::fatalBadEntry
-            (
-                dict, e.keyword(), allowed.str(),
-                "not a keyword of this model",
-                "'" + roughWallInput::entryText(dict, e.keyword()) + "'"
-            );
-        }
-    }
+    roughWallInput::checkKeywords(dict, used, model);
 }
 
 
