@@ -358,14 +358,16 @@ def smoke_test(r):
             "faults it catches: the variants %s ordered by %s, each "
             "difference larger than %g combined standard errors (no "
             "roughness, a roughness level lost); on the smooth floor the "
-            "beads roll on a wall at rest, |spin surface speed + velocity| "
-            "within %g of the velocity, and move slower than the air at "
-            "their centre u(r) (moving walls, spin not changed at the walls); "
-            "%s of each variant within %g combined standard errors of the "
-            "committed result `results/` (anything that moves a statistic)."
+            "beads slower than the air at their centre, u(r) + (h - r) "
+            "u_tau^2/nu (moving walls); in `%s`, whose spin changes at the "
+            "walls only, a negative mean spin by more than %g standard errors "
+            "(spin not changed at the walls, a wrong sign of the spin "
+            "update); %s of each variant within %g combined standard errors "
+            "of the committed result `results/` (anything that moves a "
+            "statistic)."
             % (", ".join("`%s`" % v for v in c.ORDER),
                " and by ".join("`%s`" % k for k in c.ORDERED), c.MARGIN_SE,
-               c.ROLLING_TOLERANCE, ", ".join("`%s`" % k for k in c.BAND),
+               c.WALL_SPIN, c.MARGIN_SE, ", ".join("`%s`" % k for k in c.BAND),
                c.BAND_SE))
     if not r.smoke:
         return text
