@@ -101,14 +101,14 @@ Foam::roughnessAngleTable::roughnessAngleTable(const dictionary& dict)
     {
         roughWallInput::fatalBadEntry
         (
-            dict, angle ? "roughnessAngle" : "roughness",
+            dict, "roughnessAngle",
             "exactly one of the keywords roughnessAngle (a constant or a "
             "table against the diameter) and roughness (the profile "
             "parameters)",
             "the wall's roughness",
             angle
           ? "both roughnessAngle and roughness"
-          : "neither roughnessAngle nor roughness"
+          : "missing (neither roughnessAngle nor roughness)"
         );
     }
 
