@@ -107,19 +107,29 @@ inline ProfileRoughnessError checkProfileRoughness
 }
 
 
-//- Delta(d_p) of equation (1), with the last diameter's value cached: a
-//  cloud of one or a few sizes costs a comparison per hit, not an atan
+//- Delta(d_p) of equation (1), with the angles of the last few diameters
+//  cached: a cloud of up to cacheSize sizes costs a few comparisons per hit,
+//  not an atan; a continuous size distribution costs an atan per hit
 class RoughnessCorrelation
 {
+public:
+
+    //- Number of diameters cached
+    static constexpr int cacheSize = 8;
+
+private:
+
     //- 2 pi Rq [m]
     double twoPiRq_ = 0;
 
     //- RSm [m]
     double RSm_ = 1;
 
-    //- The last diameter asked for and its angle (single-threaded use)
-    mutable double lastDiameter_ = -1;
-    mutable double lastAngle_ = 0;
+    //- Cached diameters (-1: empty) and their angles; replaced round-robin
+    //  (single-threaded use, as OpenFOAM's clouds)
+    mutable double cachedDiameter_[cacheSize] = {-1, -1, -1, -1, -1, -1, -1, -1};
+    mutable double cachedAngle_[cacheSize] = {};
+    mutable int next_ = 0;
 
 public:
 
@@ -137,21 +147,28 @@ public:
         return std::atan(twoPiRq_/(d > RSm_ ? d : RSm_));
     }
 
-    //- Equation (1) [rad], from the cache when d is the last diameter
+    //- Equation (1) [rad], from the cache when d is one of the last
+    //  cacheSize diameters
     double angle(const double d) const
     {
-        if (d != lastDiameter_)
+        for (int i = 0; i < cacheSize; ++i)
         {
-            lastDiameter_ = d;
-            lastAngle_ = angleUncached(d);
+            if (cachedDiameter_[i] == d)
+            {
+                return cachedAngle_[i];
+            }
         }
-        return lastAngle_;
+        const double a = angleUncached(d);
+        cachedDiameter_[next_] = d;
+        cachedAngle_[next_] = a;
+        next_ = (next_ + 1) % cacheSize;
+        return a;
     }
 
     //- The diameter of the regime change [m]
     double regimeChangeDiameter() const { return RSm_; }
 
-    //- The rms height used, 2 pi Rq / (2 pi) [m]
+    //- The rms height of equation (1) [m]
     double rmsHeight() const { return twoPiRq_/(2*M_PI); }
 };
 
