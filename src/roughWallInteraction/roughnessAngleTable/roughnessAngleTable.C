@@ -147,7 +147,14 @@ void Foam::roughnessAngleTable::readProfile
             profileMeaning, "'" + entryText(dict, keyword) + "'"
         );
     }
-    const dictionary& rDict = eptr->dict();
+    // Named after the patch entry, so that the messages point at it (a
+    // sub-dictionary of an entry read from a stream loses that name)
+    dictionary rDict(eptr->dict());
+    rDict.name() =
+        fileName
+        (
+            dict.name() + (roughWallCompat::esi ? "." : "/") + keyword
+        );
 
     static const char* const names[] = {"Ra", "Rq", "Rz", "RSm"};
     static const char* const meanings[] =
