@@ -73,6 +73,18 @@ TEST(roughnessParameters, CacheGivesTheUncachedValueInAnyOrder)
     {
         EXPECT_EQ(c.angle(d), c.angleUncached(d)) << "d = " << d;
     }
+    // More sizes than the cache holds, met in turn: every entry replaced
+    for (int round = 0; round < 3; ++round)
+    {
+        for (int k = 1; k <= 3*RoughnessCorrelation::cacheSize; ++k)
+        {
+            const double d = 7e-6*k;
+            const double byHand =
+                std::atan(2*pi*(pi/(2*std::sqrt(2.0)))*1e-6/std::max(50e-6, d));
+            EXPECT_NEAR(c.angle(d), byHand, 1e-14) << "d = " << d;
+            EXPECT_EQ(c.angle(d), c.angleUncached(d)) << "d = " << d;
+        }
+    }
 }
 
 
