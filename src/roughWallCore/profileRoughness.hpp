@@ -27,6 +27,7 @@
 // deg); Rq >= Ra (true of every profile); RSm > Ra.
 #pragma once
 
+#include "gaussianMass.hpp"
 #include "roughWallLimits.hpp"
 
 #include <cmath>
@@ -90,7 +91,7 @@ inline ProfileRoughnessError checkProfileRoughness
     {
         return {"RSm", "RSm > Ra (the profile elements are wider than high)"};
     }
-    if (2*M_PI*p.rmsHeight() > limits::maxProfileSlope*p.RSm)
+    if (2*pi*p.rmsHeight() > limits::maxProfileSlope*p.RSm)
     {
         return
         {
@@ -137,7 +138,7 @@ public:
 
     explicit RoughnessCorrelation(const ProfileRoughness& p)
     :
-        twoPiRq_(2*M_PI*p.rmsHeight()),
+        twoPiRq_(2*pi*p.rmsHeight()),
         RSm_(p.RSm)
     {}
 
@@ -169,7 +170,7 @@ public:
     double regimeChangeDiameter() const { return RSm_; }
 
     //- The rms height of equation (1) [m]
-    double rmsHeight() const { return twoPiRq_/(2*M_PI); }
+    double rmsHeight() const { return twoPiRq_/(2*pi); }
 };
 
 } // End namespace roughWall

@@ -21,7 +21,7 @@ using namespace roughWall;
 namespace
 {
 
-constexpr double pi = 3.14159265358979323846;
+constexpr double piTyped = 3.14159265358979323846;
 
 ProfileRoughness profile(double Ra, double Rq, double Rz, double RSm)
 {
@@ -53,10 +53,10 @@ TEST(roughnessParameters, DeltaAtDiametersAcrossTheRegimeChange)
     for (const auto& row : cases)
     {
         const double byHand =
-            std::atan(2*pi*2e-6/std::max(60e-6, row[0]))*180/pi;
+            std::atan(2*piTyped*2e-6/std::max(60e-6, row[0]))*180/piTyped;
         EXPECT_NEAR(byHand, row[1], 1e-6) << "the typed value, d = " << row[0];
-        EXPECT_NEAR(c.angle(row[0])*180/pi, row[1], 1e-6) << "d = " << row[0];
-        EXPECT_NEAR(c.angleUncached(row[0])*180/pi, row[1], 1e-6);
+        EXPECT_NEAR(c.angle(row[0])*180/piTyped, row[1], 1e-6) << "d = " << row[0];
+        EXPECT_NEAR(c.angleUncached(row[0])*180/piTyped, row[1], 1e-6);
     }
     EXPECT_EQ(c.regimeChangeDiameter(), 60e-6);
 }
@@ -80,7 +80,7 @@ TEST(roughnessParameters, CacheGivesTheUncachedValueInAnyOrder)
         {
             const double d = 7e-6*k;
             const double byHand =
-                std::atan(2*pi*(pi/(2*std::sqrt(2.0)))*1e-6/std::max(50e-6, d));
+                std::atan(2*piTyped*(piTyped/(2*std::sqrt(2.0)))*1e-6/std::max(50e-6, d));
             EXPECT_NEAR(c.angle(d), byHand, 1e-14) << "d = " << d;
             EXPECT_EQ(c.angle(d), c.angleUncached(d)) << "d = " << d;
         }
@@ -100,9 +100,9 @@ TEST(roughnessParameters, SinusoidalProfileGivesTheConversionsAndTheFlankAngle)
     for (int i = 0; i < n; ++i)
     {
         const double x = (i + 0.5)*L/n;
-        const double y = A*std::sin(2*pi*x/L);
+        const double y = A*std::sin(2*piTyped*x/L);
         const double x1 = (i + 1.5)*L/n;
-        const double slope = (A*std::sin(2*pi*x1/L) - y)/(L/n);
+        const double slope = (A*std::sin(2*piTyped*x1/L) - y)/(L/n);
         sumAbs += std::abs(y);
         sumSq += y*y;
         sumSlopeSq += slope*slope;
