@@ -2,6 +2,7 @@
 // Copyright (C) 2026 roughWallInteraction authors. SPDX-License-Identifier: GPL-3.0-or-later
 
 #include "commandLine.hpp"
+#include "profileRoughness.hpp"
 #include "roughWallLimits.hpp"
 
 #include <cerrno>
@@ -37,6 +38,12 @@ Restitution-coefficient statistics of Derevich's rough-wall collision model
 
 Model (defaults: glass beads on steel, the paper's d_p = 110 um case):
   --Delta D        sd of the facet tilt [deg], 0 <= D <= )" + maxDelta + R"(        (8)
+  or, instead of --Delta, the wall's profile (ISO 4287, metres) and a particle:
+  --Ra, --Rq, --Rz H  one or more heights: mean, rms, peak-to-valley [m]
+  --RSm L          mean width of the profile elements [m]
+  --diameter D     particle diameter [m]; Delta = atan(2 pi Rq / max(L, D)),
+                   Rq from Ra or Rz as for a sinusoid if not given
+                   (docs/roughWallInteraction.md; Delta printed on stderr)
   --e E            normal restitution of a facet, 0 <= E <= 1      (0.8)
   --mu0 M          static friction, M >= 0                         (0.4)
   --mud M          dynamic friction, 0 <= M <= mu0                 (0.4)
@@ -201,7 +208,8 @@ Options parseCommandLine(int argc, const char* const argv[])
     {
         "--Delta", "--e", "--mu0", "--mud", "--spin", "--alpha", "--method",
         "--samples", "--seed", "--max-collisions", "--tolerance", "--threads",
-        "--pdf", "--bins", "--range", "--plot", "--output", "--digits"
+        "--pdf", "--bins", "--range", "--plot", "--output", "--digits",
+        "--Ra", "--Rq", "--Rz", "--RSm", "--diameter"
     };
     static const std::set<std::string> flags{"--recollide", "--lateral", "--help", "-h"};
 
@@ -264,6 +272,53 @@ Options parseCommandLine(int argc, const char* const argv[])
                + "] degrees (the roughness sd; beyond that too many facets are overhangs), got "
                + given["--Delta"]);
         }
+    }
+
+    // Or Delta from the wall's profile parameters and the particle diameter
+    const bool profile =
+        has("--Ra") || has("--Rq") || has("--Rz") || has("--RSm") || has("--diameter");
+    if (profile)
+    {
+        if (has("--Delta"))
+        {
+            fail("give either --Delta or the profile parameters --Ra/--Rq/--Rz, --RSm "
+                 "and --diameter, not both");
+        }
+        roughWall::ProfileRoughness p;
+        if (has("--Ra")) p.Ra = number("--Ra", given["--Ra"]);
+        if (has("--Rq")) p.Rq = number("--Rq", given["--Rq"]);
+        if (has("--Rz")) p.Rz = number("--Rz", given["--Rz"]);
+        if (has("--RSm")) p.RSm = number("--RSm", given["--RSm"]);
+        const roughWall::ProfileRoughnessError error =
+            roughWall::checkProfileRoughness(p, has("--Ra"), has("--Rq"), has("--Rz"));
+        if (!error.keyword.empty())
+        {
+            fail("--" + error.keyword + " must be " + error.allowed
+               + (has(("--" + error.keyword).c_str())
+                  ? ", got " + given["--" + error.keyword] : ", missing"));
+        }
+        if (!has("--diameter"))
+        {
+            fail("--diameter (the particle diameter [m], > 0) is needed with the profile "
+                 "parameters");
+        }
+        const double d = number("--diameter", given["--diameter"]);
+        if (!(d > 0))
+        {
+            fail("--diameter must be a particle diameter > 0 [m], got " + given["--diameter"]);
+        }
+        const roughWall::RoughnessCorrelation correlation(p);
+        o.DeltaDeg = roughWall::limits::radToDeg(correlation.angleUncached(d));
+        std::ostringstream note;
+        note.precision(6);
+        note << "Delta = " << o.DeltaDeg << " deg = atan(2 pi Rq / max(RSm, d)) with Rq = "
+             << p.rmsHeight() << " m" << (p.Rq > 0 ? "" : " (from " + std::string(
+                    p.Ra > 0 ? "Ra" : "Rz") + ", as for a sinusoid)")
+             << ", RSm = " << p.RSm << " m, d = " << d << " m ("
+             << (d > p.RSm ? "d > RSm: the particle bridges the roughness"
+                           : "d <= RSm: the particle meets the flanks")
+             << ")";
+        o.notes.push_back(note.str());
     }
     o.model.Delta = roughWall::limits::degToRad(o.DeltaDeg);
 

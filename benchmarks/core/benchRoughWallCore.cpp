@@ -16,6 +16,10 @@
 //       the rebound arithmetic of OpenFOAM's StandardWallInteraction (e, mu)
 //   uniform01/rng:foam             one uniform draw (also rng:foam13, mt19937)
 //   sampler/method:exact/h:1       one sample of P(gamma, alpha), h = alpha/Delta
+//   roughness/delta:constant/alpha:mix   a hit with the constant Delta
+//   roughness/delta:profile/sizes:N/alpha:mix   the same hit with Delta from
+//       the wall's profile (profileRoughness.hpp) for a cloud of N diameters
+//       met in turn (N = 0: every hit a new diameter, no cache hit)
 // alpha:mix draws alpha ~ U(0, 90 deg) per hit. Counters: facetCollisions
 // (mean per hit), fallbacks (fraction of hits), proposals (rejection sampler).
 
@@ -24,6 +28,7 @@
 #include "referenceSamplers.hpp"
 
 #include "roughWallCollision.hpp"
+#include "profileRoughness.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -93,6 +98,57 @@ void roughHit
     state.SetItemsProcessed(state.iterations());
     state.counters["facetCollisions"] = facetCollisions/hits;
     state.counters["fallbacks"] = fallbacks/hits;
+}
+
+//- A rough hit whose Delta comes from the profile parameters and the
+//  particle diameter (nSizes > 0: nSizes diameters met in turn; 0: a new
+//  diameter every hit) or, with nSizes < 0, the constant Delta of the same
+//  profile; everything else as roughHit (3-D, spin, FoamUniform01, alpha
+//  uniform in (0, 90 deg))
+void profileHit(benchmark::State& state, int nSizes)
+{
+    const IncidentTable table(-1, false);
+    roughWall::ProfileRoughness profile;
+    profile.Rq = 2e-6;
+    profile.RSm = 60e-6;
+    const roughWall::RoughnessCorrelation correlation(profile);
+
+    roughWall::RoughWallParameters p;
+    p.material = glassOnSteel();
+    p.roughnessAngle = correlation.angleUncached(30e-6);
+    FoamUniform01 uniform01(1);
+
+    // Diameters in (10, 60] um, all at or below RSm: every size has the
+    // same Delta as the constant case, so that only the look-up differs
+    std::vector<double> diameters(IncidentTable::mask + 1);
+    for (std::size_t k = 0; k < diameters.size(); ++k)
+    {
+        const double f =
+            nSizes > 0
+          ? static_cast<double>(k % nSizes + 1)/nSizes
+          : static_cast<double>(k + 1)/diameters.size();
+        diameters[k] = 10e-6 + 50e-6*f;
+    }
+
+    std::size_t i = 0;
+    for (auto _ : state)
+    {
+        Vec3 v = table.velocity[i];
+        Vec3 w = table.spin[i];
+        if (nSizes >= 0)
+        {
+            p.roughnessAngle = correlation.angle(diameters[i]);
+        }
+        i = (i + 1) & IncidentTable::mask;
+        roughWall::collideWithRoughWall<true>
+        (
+            v, w, table.wallNormal, IncidentTable::radius, p, uniform01,
+            table.emptyDirection
+        );
+        benchmark::DoNotOptimize(v);
+        benchmark::DoNotOptimize(w);
+    }
+    state.SetItemsProcessed(state.iterations());
 }
 
 template<bool withSpin>
@@ -193,6 +249,20 @@ void facetAngleSample(benchmark::State& state, Sampler method, double h)
 
 void registerAll()
 {
+    // Delta from the profile parameters against a constant Delta
+    benchmark::RegisterBenchmark
+    (
+        "roughness/delta:constant/alpha:mix", profileHit, -1
+    );
+    for (const int n : {1, 3, 8, 0})
+    {
+        benchmark::RegisterBenchmark
+        (
+            ("roughness/delta:profile/sizes:" + std::to_string(n) + "/alpha:mix").c_str(),
+            profileHit, n
+        );
+    }
+
     const std::vector<double> alphas{-1, 1, 5, 15, 45, 85};
     const std::vector<double> Deltas{0, 2, 8, 20, 45};
 

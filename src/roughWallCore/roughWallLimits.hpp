@@ -20,6 +20,18 @@ constexpr int defaultMaxFacetCollisions = 10;
 constexpr int minMaxFacetCollisions = 1;
 constexpr int maxMaxFacetCollisions = 1000;
 
+//- Profile roughness (roughness { Ra ...; Rq ...; Rz ...; RSm ...; }, SI
+//  units): the rms height Rq that a sinusoidal profile of the same Ra or Rz
+//  has (Ra = 2A/pi, Rq = A/sqrt(2), Rz = 2A for amplitude A), used when Rq
+//  is not given (profileRoughness.hpp)
+constexpr double rqPerRaSinusoid = 1.1107207345395915;   // pi/(2 sqrt 2)
+constexpr double rqPerRzSinusoid = 0.35355339059327373;  // 1/(2 sqrt 2)
+
+//- Largest rms profile slope 2 pi Rq/RSm: its roughness angle atan(1) is
+//  maxRoughnessAngleDeg, and the small-slope picture of a profile of
+//  gentle flanks (a facet per flank) no longer holds beyond it
+constexpr double maxProfileSlope = 1;
+
 //- Degrees to radians, for the settings given in degrees
 constexpr double degToRad(const double deg)
 {

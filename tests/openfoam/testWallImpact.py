@@ -22,7 +22,12 @@ the energy loss and the reference are all taken relative to the wall.
 Usage: testWallImpact.py --platform openfoam13|openfoam1912
            --cloud colliding|kinematic|DPM|MPPIC
            [--roughness "8" | --roughness "((100e-6 8) (120e-6 4))"]
+           [--roughnessParameters "Rq 2.35e-6; RSm 105e-6;"]
            [--parcels N] [--np N] [--wallVelocity u] [--work DIR]
+--roughnessParameters: the wall given by its profile parameters
+(roughness { ... } instead of roughnessAngle); the reference of each size
+class is that of the constant Delta = atan(2 pi Rq / max(RSm, d)) of its
+diameter (docs/roughWallInteraction.md, equation (1), evaluated here).
 --cloud: colliding (spin) and kinematic clouds in the frozen carrier
 (openfoam13: foamRun, functions solver, collidingCloud / cloud; openfoam1912:
 icoUncoupledKinematicParcelFoam / uncoupledKinematicParcelFoam); MPPIC
@@ -53,6 +58,8 @@ def parse_args():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     t.add_platform_args(p)
     p.add_argument("--roughness", default="8")
+    p.add_argument("--roughnessParameters", default=None,
+                   help="roughness { Rq ...; RSm ...; } (Rq and RSm only)")
     p.add_argument("--parcels", type=int, default=10000)
     p.add_argument("--np", type=int, default=1)
     p.add_argument("--wallVelocity", type=float, default=0.0,
@@ -69,9 +76,22 @@ def roughness_at(text, d):
     return float(np.interp(d, table[:, 0], table[:, 1]))
 
 
-def settings(roughness):
+def settings(roughness, parameters=None):
+    if parameters:
+        return t.DEFAULT_SETTINGS.replace("roughnessAngle  8;",
+                                          "roughness { %s }" % parameters)
     return t.DEFAULT_SETTINGS.replace("roughnessAngle  8;",
                                       "roughnessAngle  %s;" % roughness)
+
+
+def profile_delta(parameters, d):
+    """Delta [deg] of roughness { Rq ...; RSm ...; } for diameter d:
+    atan(2 pi Rq / max(RSm, d)), typed from docs/roughWallInteraction.md"""
+    values = dict(item.split() for item in parameters.split(";")
+                  if item.strip())
+    Rq = float(values["Rq"])
+    RSm = float(values["RSm"])
+    return math.degrees(math.atan(2 * math.pi * Rq / max(RSm, d)))
 
 
 def test():
@@ -80,7 +100,8 @@ def test():
     spin = t.SPIN[args.cloud]
     case = t.wall_impact_case(platform, os.path.join(args.work, "case"),
                               args.cloud, parcels=args.parcels,
-                              settings=settings(args.roughness))
+                              settings=settings(args.roughness,
+                                                args.roughnessParameters))
     if args.wallVelocity:
         t.set_wall_velocity(case, args.wallVelocity)
     case.mesh(args.np)
@@ -125,7 +146,9 @@ def test():
 
     # Rebound statistics per angle against the oracle
     def reference_of_angle(angle, d_angle):
-        delta = roughness_at(args.roughness, d_angle)
+        delta = profile_delta(args.roughnessParameters, d_angle) \
+            if args.roughnessParameters \
+            else roughness_at(args.roughness, d_angle)
         return t.reference(spin, delta, [angle])[angle], delta
 
     kn_all, kt_all = t.check_rebound_statistics(

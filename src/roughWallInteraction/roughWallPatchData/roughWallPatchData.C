@@ -73,7 +73,8 @@ void Foam::roughWallPatchData::readRough(const dictionary& dict)
         rough_.material.mu0
     );
 
-    roughnessAngle_ = roughnessAngleTable(dict, "roughnessAngle");
+    // Exactly one of roughnessAngle and roughness
+    roughnessAngle_ = roughnessAngleTable(dict);
 
     // A constant Delta is set once (parameters(d) sets a diameter-dependent
     // one per call)
@@ -140,7 +141,8 @@ void Foam::roughWallPatchData::checkUnusedKeywords
             (
                 wordList
                 {
-                    "e", "mu0", "muD", "roughnessAngle", "lateralTilt",
+                    "e", "mu0", "muD", "roughnessAngle", "roughness",
+                    "lateralTilt",
                     "maxFacetCollisions"
                 }
             );

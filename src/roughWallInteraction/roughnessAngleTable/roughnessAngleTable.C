@@ -63,7 +63,10 @@ bool isPunct(const Foam::token& t, const Foam::token::punctuationToken p)
 Foam::roughnessAngleTable::roughnessAngleTable()
 :
     diameters_(),
-    angles_(1, Zero)
+    angles_(1, Zero),
+    fromProfile_(false),
+    profile_(),
+    correlation_()
 {}
 
 
@@ -74,7 +77,158 @@ Foam::roughnessAngleTable::roughnessAngleTable
 )
 :
     diameters_(),
-    angles_()
+    angles_(),
+    fromProfile_(false),
+    profile_(),
+    correlation_()
+{
+    readAngle(dict, keyword);
+}
+
+
+Foam::roughnessAngleTable::roughnessAngleTable(const dictionary& dict)
+:
+    diameters_(),
+    angles_(),
+    fromProfile_(false),
+    profile_(),
+    correlation_()
+{
+    const bool angle = roughWallCompat::findLiteral(dict, "roughnessAngle");
+    const bool profile = roughWallCompat::findLiteral(dict, "roughness");
+
+    if (angle == profile)
+    {
+        roughWallInput::fatalBadEntry
+        (
+            dict, "roughnessAngle",
+            "exactly one of the keywords roughnessAngle (a constant or a "
+            "table against the diameter) and roughness (the profile "
+            "parameters)",
+            "the wall's roughness",
+            angle
+          ? "both roughnessAngle and roughness"
+          : "missing (neither roughnessAngle nor roughness)"
+        );
+    }
+
+    if (angle)
+    {
+        readAngle(dict, "roughnessAngle");
+    }
+    else
+    {
+        readProfile(dict, "roughness");
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::roughnessAngleTable::readProfile
+(
+    const dictionary& dict,
+    const word& keyword
+)
+{
+    using namespace roughWallInput;
+
+    static const char* const profileMeaning =
+        "profile roughness parameters of the wall (ISO 4287, SI units): "
+        "one or more of Ra, Rq, Rz, and RSm; Delta(d_p) = "
+        "atan(2 pi Rq / max(RSm, d_p))";
+
+    const entry* eptr = roughWallCompat::findLiteral(dict, keyword);
+    if (!eptr->isDict())
+    {
+        fatalBadEntry
+        (
+            dict, keyword, "a dictionary { Ra ...; RSm ...; }",
+            profileMeaning, "'" + entryText(dict, keyword) + "'"
+        );
+    }
+    // Named after the patch entry, so that the messages point at it (a
+    // sub-dictionary of an entry read from a stream loses that name)
+    dictionary rDict(eptr->dict());
+    rDict.name() =
+        fileName
+        (
+            dict.name() + (roughWallCompat::esi ? "." : "/") + keyword
+        );
+
+    static const char* const names[] = {"Ra", "Rq", "Rz", "RSm"};
+    static const char* const meanings[] =
+    {
+        "arithmetic mean height of the profile [m]",
+        "root-mean-square height of the profile [m]",
+        "maximum height (peak to valley) of the profile [m]",
+        "mean width of the profile elements [m]"
+    };
+
+    for (const entry& e : rDict)
+    {
+        bool known = false;
+        for (const char* name : names)
+        {
+            known = known || e.keyword() == name;
+        }
+        if (!known)
+        {
+            fatalBadEntry
+            (
+                rDict, e.keyword(),
+                "only the keywords Ra, Rq, Rz and RSm", profileMeaning,
+                "unknown keyword '" + e.keyword() + "'"
+            );
+        }
+    }
+
+    scalar values[4] = {0, 0, 0, 0};
+    bool given[4] = {false, false, false, false};
+    for (label i = 0; i < 4; ++i)
+    {
+        given[i] = roughWallCompat::findLiteral(rDict, names[i]);
+        if (given[i])
+        {
+            // The signs are checked with the other limits below
+            values[i] =
+                readScalar(rDict, names[i], {-GREAT, GREAT, meanings[i]});
+        }
+    }
+
+    profile_.Ra = values[0];
+    profile_.Rq = values[1];
+    profile_.Rz = values[2];
+    profile_.RSm = values[3];
+
+    const roughWall::ProfileRoughnessError error =
+        roughWall::checkProfileRoughness
+        (
+            profile_, given[0], given[1], given[2]
+        );
+
+    if (!error.keyword.empty())
+    {
+        const word key(error.keyword);
+        const bool present = roughWallCompat::findLiteral(rDict, key);
+        fatalBadEntry
+        (
+            rDict, key, error.allowed, profileMeaning,
+            present ? "'" + entryText(rDict, key) + "'" : string("missing")
+        );
+    }
+
+    fromProfile_ = true;
+    correlation_ = roughWall::RoughnessCorrelation(profile_);
+    angles_.setSize(1, correlation_.angleUncached(0));
+}
+
+
+void Foam::roughnessAngleTable::readAngle
+(
+    const dictionary& dict,
+    const word& keyword
+)
 {
     using namespace roughWallInput;
 
@@ -173,7 +327,7 @@ Foam::roughnessAngleTable::roughnessAngleTable
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::roughnessAngleTable::value(const scalar d) const
+Foam::scalar Foam::roughnessAngleTable::tableValue(const scalar d) const
 {
     if (constant())
     {
@@ -215,7 +369,14 @@ Foam::scalar Foam::roughnessAngleTable::value(const scalar d) const
 Foam::string Foam::roughnessAngleTable::description() const
 {
     OStringStream os;
-    if (constant())
+    if (fromProfile_)
+    {
+        os  << "atan(2 pi Rq/max(RSm, d)) with Rq = "
+            << correlation_.rmsHeight() << " m, RSm = " << profile_.RSm
+            << " m: " << roughWall::limits::radToDeg(angles_[0])
+            << " deg for d <= RSm";
+    }
+    else if (constant())
     {
         os  << roughWall::limits::radToDeg(angles_[0]) << " deg";
     }

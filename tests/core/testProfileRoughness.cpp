@@ -1,0 +1,152 @@
+// The roughness angle from the profile parameters (profileRoughness.hpp).
+// Oracles, none of which calls the code under test to get its expectation:
+//  - equation (1) of docs/roughWallInteraction.md, Delta(d) =
+//    atan(2 pi Rq / max(RSm, d)), evaluated here by hand with its constants
+//    typed in, at diameters below, at and above the regime change d = RSm;
+//  - a sampled sinusoidal profile: its Ra, Rq, Rz and rms slope, measured
+//    numerically, give the conversion constants and the small-particle angle;
+//  - the limits: each bad set of parameters names its keyword.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include "profileRoughness.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+using namespace roughWall;
+
+namespace
+{
+
+constexpr double piTyped = 3.14159265358979323846;
+
+ProfileRoughness profile(double Ra, double Rq, double Rz, double RSm)
+{
+    ProfileRoughness p;
+    p.Ra = Ra;
+    p.Rq = Rq;
+    p.Rz = Rz;
+    p.RSm = RSm;
+    return p;
+}
+
+} // namespace
+
+
+// Rq = 2 um, RSm = 60 um: below the regime change the angle is that of the
+// flanks, atan(2 pi 2/60) = 11.8290 deg; above it falls like 1/d
+TEST(roughnessParameters, DeltaAtDiametersAcrossTheRegimeChange)
+{
+    const RoughnessCorrelation c(profile(0, 2e-6, 0, 60e-6));
+
+    // (d [m], Delta [deg]) by hand: atan(2 pi Rq / max(RSm, d))
+    const double cases[][2] =
+    {
+        {30e-6, 11.829018},    // d < RSm: atan(0.20943951)
+        {60e-6, 11.829018},    // d = RSm
+        {90e-6, 7.9486117},    // d > RSm, just above: atan(0.13962634)
+        {195e-6, 3.6872091},   // d > RSm: atan(0.06444293)
+    };
+    for (const auto& row : cases)
+    {
+        const double byHand =
+            std::atan(2*piTyped*2e-6/std::max(60e-6, row[0]))*180/piTyped;
+        EXPECT_NEAR(byHand, row[1], 1e-6) << "the typed value, d = " << row[0];
+        EXPECT_NEAR(c.angle(row[0])*180/piTyped, row[1], 1e-6) << "d = " << row[0];
+        EXPECT_NEAR(c.angleUncached(row[0])*180/piTyped, row[1], 1e-6);
+    }
+    EXPECT_EQ(c.regimeChangeDiameter(), 60e-6);
+}
+
+
+// The cache returns what the formula gives for every diameter, whatever
+// the order of the diameters (monodisperse, alternating, polydisperse)
+TEST(roughnessParameters, CacheGivesTheUncachedValueInAnyOrder)
+{
+    const RoughnessCorrelation c(profile(1e-6, 0, 0, 50e-6));
+    const std::vector<double> ds =
+        {20e-6, 20e-6, 20e-6, 100e-6, 20e-6, 100e-6, 100e-6, 500e-6, 1e-3, 50e-6};
+    for (const double d : ds)
+    {
+        EXPECT_EQ(c.angle(d), c.angleUncached(d)) << "d = " << d;
+    }
+    // More sizes than the cache holds, met in turn: every entry replaced
+    for (int round = 0; round < 3; ++round)
+    {
+        for (int k = 1; k <= 3*RoughnessCorrelation::cacheSize; ++k)
+        {
+            const double d = 7e-6*k;
+            const double byHand =
+                std::atan(2*piTyped*(piTyped/(2*std::sqrt(2.0)))*1e-6/std::max(50e-6, d));
+            EXPECT_NEAR(c.angle(d), byHand, 1e-14) << "d = " << d;
+            EXPECT_EQ(c.angle(d), c.angleUncached(d)) << "d = " << d;
+        }
+    }
+}
+
+
+// A sinusoid y = A sin(2 pi x / L), sampled: Ra, Rq, Rz and the rms slope
+// measured numerically; Rq from Ra or from Rz must equal the measured Rq,
+// and the angle of a small particle must be atan(measured rms slope)
+TEST(roughnessParameters, SinusoidalProfileGivesTheConversionsAndTheFlankAngle)
+{
+    const double A = 3e-6;
+    const double L = 80e-6;
+    const int n = 100000;   // samples over one wavelength
+    double sumAbs = 0, sumSq = 0, sumSlopeSq = 0, ymin = 1, ymax = -1;
+    for (int i = 0; i < n; ++i)
+    {
+        const double x = (i + 0.5)*L/n;
+        const double y = A*std::sin(2*piTyped*x/L);
+        const double x1 = (i + 1.5)*L/n;
+        const double slope = (A*std::sin(2*piTyped*x1/L) - y)/(L/n);
+        sumAbs += std::abs(y);
+        sumSq += y*y;
+        sumSlopeSq += slope*slope;
+        ymin = std::min(ymin, y);
+        ymax = std::max(ymax, y);
+    }
+    const double Ra = sumAbs/n;
+    const double Rq = std::sqrt(sumSq/n);
+    const double Rz = ymax - ymin;
+    const double rmsSlope = std::sqrt(sumSlopeSq/n);
+
+    EXPECT_NEAR(profile(Ra, 0, 0, L).rmsHeight(), Rq, 1e-6*Rq) << "Rq from Ra";
+    EXPECT_NEAR(profile(0, 0, Rz, L).rmsHeight(), Rq, 1e-6*Rq) << "Rq from Rz";
+    EXPECT_EQ(profile(Ra, Rq, Rz, L).rmsHeight(), Rq) << "Rq given wins";
+
+    const RoughnessCorrelation c(profile(Ra, 0, 0, L));
+    EXPECT_NEAR(c.angle(0.5*L), std::atan(rmsSlope), 1e-6);
+    EXPECT_NEAR(c.angle(4*L), std::atan(rmsSlope/4), 1e-6) << "1/d above RSm";
+}
+
+
+// Bad parameters: each names the offending keyword
+TEST(roughnessParameters, BadParametersNameTheirKeyword)
+{
+    const auto keyword = [](const ProfileRoughness& p, bool a, bool q, bool z)
+    {
+        return checkProfileRoughness(p, a, q, z).keyword;
+    };
+
+    EXPECT_EQ(keyword(profile(1e-6, 0, 0, 50e-6), true, false, false), "");
+    EXPECT_EQ(keyword(profile(1e-6, 1.2e-6, 8e-6, 50e-6), true, true, true), "");
+    EXPECT_EQ(keyword(profile(0, 0, 0, 50e-6), true, false, false), "Ra") << "zero";
+    EXPECT_EQ(keyword(profile(-1e-6, 0, 0, 50e-6), true, false, false), "Ra");
+    EXPECT_EQ(keyword(profile(0, -1e-6, 0, 50e-6), false, true, false), "Rq");
+    EXPECT_EQ(keyword(profile(0, 0, 0, 50e-6), false, false, true), "Rz");
+    EXPECT_EQ(keyword(profile(1e-6, 0, 0, 0), true, false, false), "RSm");
+    EXPECT_EQ(keyword(profile(1e-6, 0, 0, -5e-6), true, false, false), "RSm");
+    EXPECT_EQ(keyword(profile(0, 0, 0, 50e-6), false, false, false), "Ra")
+        << "no height given";
+    EXPECT_EQ(keyword(profile(1e-6, 0.9e-6, 0, 50e-6), true, true, false), "Rq")
+        << "Rq < Ra";
+    EXPECT_EQ(keyword(profile(1e-6, 0, 0, 0.9e-6), true, false, false), "RSm")
+        << "RSm < Ra";
+    // 2 pi Rq / RSm > 1: flanks steeper than 45 deg
+    EXPECT_EQ(keyword(profile(0, 1e-6, 0, 6e-6), false, true, false), "RSm");
+    EXPECT_EQ(keyword(profile(0, 1e-6, 0, 6.3e-6), false, true, false), "");
+}

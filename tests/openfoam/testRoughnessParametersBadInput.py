@@ -1,0 +1,109 @@
+#!/usr/bin/env python3
+"""Bad profile roughness parameters (the roughness { Ra ...; RSm ...; }
+entry of a rough patch) stop the run with a FatalIOError naming the
+dictionary, the keyword and the allowed range.
+
+Control: valid parameters run.  Then one run per bad entry: negative or
+zero values, Rq < Ra, RSm < Ra, flanks steeper than 45 deg, no height,
+no RSm, an unknown keyword inside roughness, roughness not a dictionary,
+and roughnessAngle and roughness together.  Same harness and checks as
+testBadInput.py (FOAM FATAL IO ERROR, the settings file, the patches entry,
+the keyword, the allowed range; no crash).
+
+Usage: testRoughnessParametersBadInput.py --platform openfoam13|openfoam1912
+           [--cloud KIND] [--work DIR]
+
+SPDX-License-Identifier: GPL-3.0-or-later
+"""
+
+import os
+
+import foamTestCase as t
+import testBadInput as b
+
+
+def rough(body, angle=None):
+    """Settings with roughness { body } instead of roughnessAngle (or with
+    both if angle is given)."""
+    return b.settings({"roughnessAngle": angle,
+                       "roughness": "{ %s }" % body}).replace(
+        "roughness       { %s };" % body, "roughness       { %s }" % body)
+
+
+IN = b.IN_PATCH
+POSITIVE = "a length > 0 [m]"
+
+#: name, settings, texts that the log must contain
+CASES = [
+    ("Ra negative", rough("Ra -1e-6; RSm 50e-6;"),
+     ["keyword 'Ra'", IN, POSITIVE]),
+    ("Ra zero", rough("Ra 0; RSm 50e-6;"),
+     ["keyword 'Ra'", IN, POSITIVE]),
+    ("Rq negative", rough("Rq -2e-6; RSm 50e-6;"),
+     ["keyword 'Rq'", IN, POSITIVE]),
+    ("Rz zero", rough("Rz 0; RSm 50e-6;"),
+     ["keyword 'Rz'", IN, POSITIVE]),
+    ("RSm zero", rough("Ra 1e-6; RSm 0;"),
+     ["keyword 'RSm'", IN, POSITIVE]),
+    ("RSm missing", rough("Ra 1e-6;"),
+     ["keyword 'RSm'", IN, "(mandatory)", "missing"]),
+    ("no height", rough("RSm 50e-6;"),
+     ["keyword 'Ra'", IN, "at least one of Ra, Rq, Rz"]),
+    ("Rq below Ra", rough("Ra 2e-6; Rq 1.5e-6; RSm 50e-6;"),
+     ["keyword 'Rq'", IN, "Rq >= Ra"]),
+    ("RSm below Ra", rough("Ra 2e-6; RSm 1e-6;"),
+     ["keyword 'RSm'", IN, "RSm > Ra"]),
+    ("flanks too steep", rough("Rq 2e-6; RSm 10e-6;"),
+     ["keyword 'RSm'", IN, "RSm >= 2 pi Rq", "at most 45"]),
+    ("unknown keyword", rough("Ra 1e-6; Rsm 50e-6;"),
+     ["keyword 'Rsm'", IN, "only the keywords Ra, Rq, Rz and RSm",
+      "unknown keyword 'Rsm'"]),
+    ("roughness not a dictionary",
+     b.settings({"roughnessAngle": None, "roughness": "1e-6"}),
+     ["keyword 'roughness'", IN, "a dictionary { Ra ...; RSm ...; }"]),
+    ("roughnessAngle and roughness", rough("Ra 1e-6; RSm 50e-6;", angle="8"),
+     ["keyword 'roughnessAngle'", IN, "exactly one of the keywords "
+      "roughnessAngle", "both roughnessAngle and roughness"]),
+]
+
+
+def test():
+    args = b.parse_args()
+    platform = t.Platform(args.platform)
+    case = t.wall_impact_case(platform, os.path.join(args.work, "case"),
+                              args.cloud, two_d=True, parcels=10)
+    case.set_control(endTime="0.001")
+    case.mesh()
+
+    # Control: valid parameters run and the log states the Delta they give
+    case.write_settings(rough("Ra 1e-6; Rz 6e-6; RSm 50e-6;"))
+    rc, _ = case.solve("log.good", check_rc=False)
+    t.check(rc == 0 and "atan(2 pi Rq/max(RSm, d))" in case.log("log.good"),
+            "control: valid roughness parameters run (rc %d) and are logged"
+            % rc)
+
+    settings_file = "constant/roughWallSettings" if platform.foundation \
+        else "constant/" + platform.properties
+    for i, (name, text, expected) in enumerate(CASES):
+        case.write_settings(text)
+        log = "log.bad%02d" % i
+        rc, _ = case.solve(log, check_rc=False)
+        out = case.log(log)
+        expected = [e.texts(platform) if isinstance(e, b.Scope) else e
+                    for e in ["FOAM FATAL IO ERROR", settings_file] + expected]
+        missing = [e for e in expected if not (
+            any(alt in out for alt in e) if isinstance(e, list) else e in out)]
+        crashed = [s for s in b.CRASH_SIGNS if s in out] \
+            + (["signal %d" % -rc] if rc < 0 else [])
+        t.check(rc != 0 and not missing and not crashed,
+                "%s: rc %d, %s%s" % (
+                    name, rc,
+                    "missing text %s" % missing if missing else
+                    "error names %s" % ", ".join(
+                        e if isinstance(e, str) else " or ".join(e)
+                        for e in expected[1:]),
+                    ", CRASH %s" % crashed if crashed else ""))
+
+
+if __name__ == "__main__":
+    t.main(test)
