@@ -98,8 +98,27 @@ def commit_of(repo):
     return commit + ("+changes" if dirty else "")
 
 
-def copy_tree(repo, dest):
-    """The tracked files as they are in the working tree"""
+def put(target, data, mode=None):
+    """Write data to target unless it already holds it; a written file gets
+    a new mtime, so that a reused build (--keep) recompiles it"""
+    try:
+        with open(target, "rb") as f:
+            if f.read() == data:
+                return
+    except OSError:
+        pass
+    os.makedirs(os.path.dirname(target), exist_ok=True)
+    with open(target, "wb") as f:
+        f.write(data)
+    if mode is not None:
+        os.chmod(target, mode)
+    now = time.time()
+    os.utime(target, (now, now + 1))
+
+
+def copy_tree(repo, dest, overlays):
+    """The tracked files as they are in the working tree, then the files an
+    overlay branch changed since its merge base with HEAD (as committed)"""
     files = subprocess.run(["git", "-C", repo, "ls-files", "-z"],
                            capture_output=True, check=True).stdout
     for name in files.decode().split("\0"):
@@ -108,9 +127,29 @@ def copy_tree(repo, dest):
         src = os.path.join(repo, name)
         if not os.path.isfile(src):
             continue
-        target = os.path.join(dest, name)
-        os.makedirs(os.path.dirname(target), exist_ok=True)
-        shutil.copy2(src, target)
+        with open(src, "rb") as f:
+            put(os.path.join(dest, name), f.read(), os.stat(src).st_mode)
+    described = []
+    for ref in overlays:
+        base = subprocess.run(["git", "-C", repo, "merge-base", "HEAD", ref],
+                              capture_output=True, text=True,
+                              check=True).stdout.strip()
+        changed = subprocess.run(["git", "-C", repo, "diff", "--name-only",
+                                  "--diff-filter=AM", base, ref],
+                                 capture_output=True, text=True,
+                                 check=True).stdout.split()
+        for name in changed:
+            data = subprocess.run(["git", "-C", repo, "show",
+                                   "%s:%s" % (ref, name)],
+                                  capture_output=True, check=True).stdout
+            put(os.path.join(dest, name), data, 0o755
+                if name.endswith(".py") else 0o644)
+        commit = subprocess.run(["git", "-C", repo, "rev-parse", "--short",
+                                 ref], capture_output=True,
+                                text=True).stdout.strip()
+        described.append("%s %s (%d files: %s)" % (
+            ref, commit, len(changed), ", ".join(changed)))
+    return described
 
 
 def run(cmd, log, env=None, cwd=None, timeout=None):
@@ -144,6 +183,12 @@ def ctest(build, regex, log, env, jobs, timeout):
         out.write(proc.stdout + proc.stderr)
     ran = len(re.findall(r"Test +#\d+: ", proc.stdout))
     return ran, failed_tests(proc.stdout), proc.returncode
+
+
+def test_names(build, regex, env):
+    proc = subprocess.run(["ctest", "--test-dir", build, "-N", "-R", regex],
+                          capture_output=True, text=True, env=env)
+    return re.findall(r"Test +#\d+: (\S+)", proc.stdout)
 
 
 class Builder:
@@ -211,15 +256,23 @@ def tests_of(fault, platform):
     return fault["tests"].replace("<platform>", platform or "openfoam13")
 
 
-def write_report(path, level, platform, commit, rows, total, command):
+def write_report(path, level, platform, commit, rows, total, command,
+                 overlays, planned):
     title = {"core": "core (CMake)",
              "openfoam": "OpenFOAM adapter (%s, wmake)" % platform}[level]
     lines = [
         "# Mutation check: %s" % title,
         "",
         "Source commit: %s. Made by: `%s`." % (commit, command),
-        "Total time %.0f s. Killed %d of %d faults%s." % (
+    ] + (["With the files of " + "; ".join(overlays) + "."]
+         if overlays else []) + [
+        "",
+        "Started %s." % time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime(
+            time.time() - total)),
+        "Total time %.0f s. Killed %d of %d faults%s%s." % (
             total, sum(1 for r in rows if r["killed"]), len(rows),
+            "" if len(rows) == planned else
+            " (INCOMPLETE: %d of %d faults run)" % (len(rows), planned),
             "" if all(r["killed"] for r in rows) else
             "; SURVIVORS: " + ", ".join(r["name"] for r in rows
                                         if not r["killed"])),
@@ -231,7 +284,8 @@ def write_report(path, level, platform, commit, rows, total, command):
         killed = ", ".join(r["killed"]) if r["killed"] else (
             "**SURVIVED**" if r["status"] == "ran" else "**" + r["status"] + "**")
         lines.append("| %s | %s | `%s` (%d) | %s | %.0f |" % (
-            r["name"], ", ".join(r["files"]), r["tests"], r["ran"], killed,
+            r["name"], ", ".join(r["files"]),
+            r["tests"].replace("|", "\\|"), r["ran"], killed,
             r["time"]))
     lines.append("")
     with open(path, "w") as f:
@@ -253,6 +307,9 @@ def main():
     parser.add_argument("--baseline", action="store_true",
                         help="first run every selected test on the unchanged "
                         "copy; they must pass")
+    parser.add_argument("--overlay", action="append", default=[],
+                        help="a branch whose changed files (tests not yet "
+                        "merged, e.g. shear) are added to the copy")
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--timeout", type=int, default=900)
     args = parser.parse_args()
@@ -275,7 +332,7 @@ def main():
     if not (args.keep and os.path.isdir(tree)):
         shutil.rmtree(tree, ignore_errors=True)
         os.makedirs(tree)
-    copy_tree(REPO, tree)
+    overlays = copy_tree(REPO, tree, args.overlay)
     print("mutation: %s faults of level %s on a copy in %s (log %s)"
           % (len(faults), args.level, tree, log), flush=True)
 
@@ -287,7 +344,12 @@ def main():
         fail("build of the unchanged copy failed (see %s)" % log)
 
     if args.baseline:
-        regex = "|".join("(%s)" % tests_of(f, args.platform) for f in faults)
+        # One run of the union (ctest's regular expressions allow only a few
+        # groups: the union is written as a list of names)
+        names = set()
+        for regex in {tests_of(f, args.platform) for f in faults}:
+            names |= set(test_names(builder.build, regex, builder.env))
+        regex = "^(" + "|".join(re.escape(n) for n in sorted(names)) + ")$"
         ran, failed, _ = ctest(builder.build, regex, log, builder.env,
                                args.jobs, args.timeout)
         if failed or ran == 0:
@@ -296,6 +358,10 @@ def main():
         print("baseline: %d tests pass (%.0f s)" % (ran, time.time() - start),
               flush=True)
 
+    command = "tests/mutation/mutate.py --level %s%s%s" % (
+        args.level, " --platform " + args.platform
+        if args.level == "openfoam" else "",
+        "".join(" --overlay " + o for o in args.overlay))
     rows = []
     for fault in faults:
         t0 = time.time()
@@ -318,17 +384,19 @@ def main():
             restore(originals)
         row["time"] = time.time() - t0
         rows.append(row)
+        if args.report:
+            # After every fault: an interrupted run keeps what it found
+            write_report(args.report, args.level, args.platform, commit,
+                         rows, time.time() - start, command, overlays,
+                         len(faults))
         print("%-34s %-12s %4.0f s  killed by: %s" % (
             fault["name"], row["status"], row["time"],
             ", ".join(row["killed"]) or "NOTHING"), flush=True)
 
     total = time.time() - start
-    command = "tests/mutation/mutate.py --level %s%s" % (
-        args.level, " --platform " + args.platform
-        if args.level == "openfoam" else "")
     if args.report:
         write_report(args.report, args.level, args.platform, commit, rows,
-                     total, command)
+                     total, command, overlays, len(faults))
         print("report: " + args.report)
     if not args.keep and not args.work:
         shutil.rmtree(work, ignore_errors=True)
