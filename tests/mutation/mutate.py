@@ -22,7 +22,7 @@ Levels:
 Usage:
   tests/mutation/mutate.py --level core|openfoam [--report FILE]
       [--only NAME,NAME] [--platform openfoam13] [--work DIR] [--keep]
-      [--baseline] [--jobs N]
+      [--baseline] [--overlay BRANCH] [--jobs N]
 
 The report (markdown) lists fault, file, tests run, killed by and time, with
 the commit of the source tree.  Standard library only; Debian's python3.
@@ -142,6 +142,26 @@ def copy_tree(repo, dest, overlays):
             data = subprocess.run(["git", "-C", repo, "show",
                                    "%s:%s" % (ref, name)],
                                   capture_output=True, check=True).stdout
+            ours = os.path.join(repo, name)
+            original = subprocess.run(["git", "-C", repo, "show",
+                                       "%s:%s" % (base, name)],
+                                      capture_output=True)
+            if os.path.isfile(ours) and original.returncode == 0:
+                # Changed here too: a three-way merge (git merge-file)
+                with tempfile.TemporaryDirectory() as tmp:
+                    files = []
+                    for label, text in (("base", original.stdout),
+                                        ("theirs", data)):
+                        files.append(os.path.join(tmp, label))
+                        with open(files[-1], "wb") as f:
+                            f.write(text)
+                    merged = subprocess.run(["git", "merge-file", "-p", ours,
+                                             files[0], files[1]],
+                                            capture_output=True)
+                    if merged.returncode != 0:
+                        fail("--overlay %s: %s does not merge cleanly"
+                             % (ref, name))
+                    data = merged.stdout
             put(os.path.join(dest, name), data, 0o755
                 if name.endswith(".py") else 0o644)
         commit = subprocess.run(["git", "-C", repo, "rev-parse", "--short",
