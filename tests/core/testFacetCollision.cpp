@@ -1,5 +1,7 @@
 // The 3-D hard-sphere facet collision: reduction to the corrected closed forms
-// (2.6)/(2.7) for in-plane spin, and its invariants on a million random inputs.
+// (2.6)/(2.7) for in-plane spin (typed in this file from the paper and the
+// model notes), and its invariants on a million random inputs (energy, the
+// impulse cone |J_t| <= mu |J_n|, exact rolling after a stick).
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 #include "restitutionCoefficients.hpp"
@@ -7,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 using namespace roughWall;
@@ -47,8 +50,45 @@ double energy(const Vec3& v, const Vec3& w, double r)
     return 0.5*v.squaredNorm() + 0.2*r*r*w.squaredNorm();
 }
 
+//- Derevich's closed forms (2.6) (no-slip) and (2.7) (sliding) with the
+//  corrections of the model notes, section 3 ((2.3): "eps/7" read as 1 and
+//  V'_y(g) > 0 toward the facet; (2.6): k_Omega = -(5/7)(cos g - z sin g)
+//  + (2/7) A_Omega and the spin term of k_n is -(2/7) A_Omega/z), typed here
+//  from the paper: z = tan alpha, A_Omega = r Omega'_z/V'_x, eps0 the sign of
+//  the facet slip, no-slip if |slip| <= (7/2) mu0 (1 + e) (z cos g + sin g).
+struct PaperRestitution
+{
+    double kn, kt, kOmega;
+    bool noSlip;
+};
+
+PaperRestitution paperClosedForm(double g, double alpha, double A, const FacetMaterial& m)
+{
+    const double z = std::tan(alpha), c = std::cos(g), s = std::sin(g), e = m.e;
+    const double slip = c - z*s + A;
+    PaperRestitution k;
+    k.noSlip = std::abs(slip) <= 3.5*m.mu0*(1 + e)*(z*c + s);
+    if (k.noSlip)
+    {
+        k.kt = (5.0/7.0*(c - z*s) - 2.0/7.0*A)*c - e*(z*c + s)*s;
+        k.kn = e*(c + s/z)*c + (5.0/7.0*(c/z - s) - 2.0/7.0*A/z)*s;
+        k.kOmega = -5.0/7.0*(c - z*s) + 2.0/7.0*A;
+    }
+    else
+    {
+        const double f = m.muD*(1 + e)*(slip > 0 ? 1 : -1);
+        k.kt = ((c - z*s) - f*(s + z*c))*c - e*(z*c + s)*s;
+        k.kn = e*(s/z + c)*c + ((c/z - s) - f*(s/z + c))*s;
+        k.kOmega = A - 2.5*f*(s + z*c);
+    }
+    return k;
+}
+
 } // namespace
 
+// Oracle: the paper's closed forms as corrected, typed above (paperClosedForm);
+// the core's vector collision and its closedFormRestitution (which
+// roughWallStats integrates) must both reproduce them.
 TEST(FacetCollision, ReducesToCorrectedClosedFormsForInPlaneSpin)
 {
     RandomInputs in(2024);
@@ -67,7 +107,8 @@ TEST(FacetCollision, ReducesToCorrectedClosedFormsForInPlaneSpin)
         const Vec3 w1 = (AOmega*V*std::cos(alpha)/r)*z;
         const Vec3 n(-std::sin(gamma), std::cos(gamma), 0);
 
-        const auto closed = closedFormRestitution(gamma, alpha, AOmega, m);
+        const PaperRestitution paper = paperClosedForm(gamma, alpha, AOmega, m);
+        const auto core = closedFormRestitution(gamma, alpha, AOmega, m);
         // Skip inputs at the regime boundary, where round-off picks the branch
         const double slip = std::cos(gamma) - std::tan(alpha)*std::sin(gamma) + AOmega;
         const double limit = 3.5*m.mu0*(1 + m.e)*(std::tan(alpha)*std::cos(gamma) + std::sin(gamma));
@@ -77,11 +118,15 @@ TEST(FacetCollision, ReducesToCorrectedClosedFormsForInPlaneSpin)
         const Regime regime = collideWithFacet<true>(v, w, n, r, m);
         const auto k = restitutionCoefficients(v1, v, w, N, t, r);
 
-        ASSERT_EQ(regime, closed.regime);
-        const double scale = 1 + std::abs(closed.k.kn) + std::abs(closed.k.kt) + std::abs(closed.k.kOmega);
-        EXPECT_NEAR(k.kn, closed.k.kn, 1e-12*scale);
-        EXPECT_NEAR(k.kt, closed.k.kt, 1e-12*scale);
-        EXPECT_NEAR(k.kOmega, closed.k.kOmega, 1e-12*scale);
+        ASSERT_EQ(regime == Regime::noSlip, paper.noSlip);
+        ASSERT_EQ(core.regime == Regime::noSlip, paper.noSlip);
+        const double scale = 1 + std::abs(paper.kn) + std::abs(paper.kt) + std::abs(paper.kOmega);
+        EXPECT_NEAR(k.kn, paper.kn, 1e-12*scale);
+        EXPECT_NEAR(k.kt, paper.kt, 1e-12*scale);
+        EXPECT_NEAR(k.kOmega, paper.kOmega, 1e-12*scale);
+        EXPECT_NEAR(core.k.kn, paper.kn, 1e-12*scale);
+        EXPECT_NEAR(core.k.kt, paper.kt, 1e-12*scale);
+        EXPECT_NEAR(core.k.kOmega, paper.kOmega, 1e-12*scale);
         ++compared;
         noSlip += regime == Regime::noSlip;
     }

@@ -83,6 +83,41 @@ TEST(SpinCoefficients, OesterleBuiDinhTable)
 }
 
 
+// Both correlations typed here from their sources, independently of
+// particleSpin.hpp, and compared on a grid that spans every branch:
+//   Oesterle & Bui Dinh, Exp. Fluids 25 (1998) 16-22, their fit of the lift
+//   of a spinning sphere (10 < Re_p < 140, used as is outside):
+//     C_LR = 0.45 + (Re_R/Re_p - 0.45) exp(-0.05684 Re_R^0.4 Re_p^0.3)
+//   Dennis, Singh & Ingham, J. Fluid Mech. 101 (1980) 257-279, the torque of
+//   a sphere rotating in a fluid at rest (Re_R = Omega d^2/nu):
+//     C_R = 64 pi/Re_R (Re_R <= 32),  12.9/sqrt(Re_R) + 128.4/Re_R (above)
+// with Re_p = |U_rel| d/nu and Re_R = |Omega_rel| d^2/nu.
+TEST(SpinCoefficients, CorrelationsAsPublished)
+{
+    const auto oesterle = [](double Rep, double ReR)
+    {
+        return 0.45 + (ReR/Rep - 0.45)*std::exp(-0.05684*std::pow(ReR, 0.4)*std::pow(Rep, 0.3));
+    };
+    const auto dennis = [](double ReR)
+    {
+        return ReR <= 32 ? 64*3.141592653589793/ReR : 12.9/std::sqrt(ReR) + 128.4/ReR;
+    };
+    for (double Rep = 0.1; Rep < 2000; Rep *= 1.7)
+    {
+        for (double ReR = 0.01; ReR < 2e4; ReR *= 2.3)
+        {
+            EXPECT_LE(relativeError(liftCoefficientOesterleBuiDinh(Rep, ReR), oesterle(Rep, ReR)), 1e-13)
+                << "Re_p = " << Rep << ", Re_R = " << ReR;
+        }
+    }
+    for (double ReR : {0.001, 1.0, 31.999, 32.0, 32.001, 100.0, 999.0, 5000.0})
+    {
+        EXPECT_LE(relativeError(torqueCoefficientDennisSinghIngham(ReR), dennis(ReR)), 1e-14)
+            << "Re_R = " << ReR;
+    }
+}
+
+
 // Rubinow & Keller: C_LR = Re_R/Re_p, so that (Re_p/Re_R) C_LR = 1
 TEST(SpinCoefficients, RubinowKeller)
 {
