@@ -256,13 +256,13 @@ def observations(r):
                worst(suspended, "upperFraction"), worst(suspended, "UyRms")))
     if flat:
         out.append(
-            "- The beads on the smooth floors (%s) are still settling into "
-            "sliding: their rms wall-normal velocity changed by %s m/s between "
-            "the two halves of the sampling window (negligible, but many "
-            "standard errors, since they hardly scatter)." % (
+            "- The beads on the smooth floors (%s) have settled: between the "
+            "two halves of the sampling window their mean velocity changed "
+            "by %s m/s, at most %.1f standard errors." % (
                 ", ".join("`%s`" % v for v in flat),
-                " and ".join("%.1e" % (r.s(v, "UyRmsLate") - r.s(v, "UyRmsEarly"))
-                             for v in flat)))
+                " and ".join("%.4f" % (r.s(v, "meanUxLate") - r.s(v, "meanUxEarly"))
+                             for v in flat),
+                max(worst(flat, "meanUx"), worst(flat, "UyRms"))))
     return "\n".join(out)
 
 
@@ -298,7 +298,7 @@ def trends(r):
          "more frequent, more oblique wall collisions)",
          "mean streamwise parcel velocity [m/s]: " + series("meanUx", "%.2f"),
          agree("meanUx", False)],
-        ["(not measured in the experiments) the beads' spin",
+        ["(no trend cited from the experiments) the beads' spin",
          "mean spin surface speed omega d/2 [m/s]: "
          + series("meanSpinSpeed", "%.2f"), "-"],
         ["the wall collision frequency grows with roughness",
