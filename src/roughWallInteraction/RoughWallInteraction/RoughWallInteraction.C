@@ -249,7 +249,7 @@ void Foam::RoughWallInteraction<CloudType>::checkCoeffsKeywords() const
     // patches entries) would be ignored silently
     const wordList used{"patches", "writeToFile", "writePrecision", "U"};
 
-    for (const entry& e : this->coeffDict())
+    for (const entry& e : roughWallCompat::coeffs(*this))
     {
         bool found = false;
         for (const word& w : used)
@@ -258,7 +258,7 @@ void Foam::RoughWallInteraction<CloudType>::checkCoeffsKeywords() const
         }
         if (!found)
         {
-            IOWarningInFunction(this->coeffDict())
+            IOWarningInFunction(roughWallCompat::coeffs(*this))
                 << "Keyword '" << e.keyword().c_str() << "' is not used here;"
                 << " used keywords: " << used
                 << ". Settings of a patch go inside its entry of patches."
@@ -278,7 +278,7 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
 )
 :
     PatchInteractionModel<CloudType>(dict, cloud, typeName),
-    patches_(this->coeffDict(), cloud.mesh()),
+    patches_(roughWallCompat::coeffs(*this), cloud.mesh()),
     stats_(patches_.nNonProcessor()),
     file_()
 {
@@ -299,14 +299,14 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
 
     const bool writeToFile = roughWallInput::readSwitchOrDefault
     (
-        this->coeffDict(), "writeToFile",
+        roughWallCompat::coeffs(*this), "writeToFile",
         "write the statistics under postProcessing/ (default: true)",
         true
     );
 
     const label precision = roughWallInput::readLabelOrDefault
     (
-        this->coeffDict(), "writePrecision",
+        roughWallCompat::coeffs(*this), "writePrecision",
         {1, 17, "significant digits of the statistics file (default: "
             "controlDict's writePrecision)"},
         IOstream::defaultPrecision()
@@ -396,10 +396,10 @@ bool Foam::RoughWallInteraction<CloudType>::correct
 
 
 template<class CloudType>
-void Foam::RoughWallInteraction<CloudType>::info(Ostream& os)
+void Foam::RoughWallInteraction<CloudType>::info(ROUGHWALL_INFO_PARAMETERS)
 {
-    // v1912: the system escapes
-    PatchInteractionModel<CloudType>::info(os);
+    // ESI: the system escapes
+    PatchInteractionModel<CloudType>::info(ROUGHWALL_INFO_ARGUMENTS);
 
     // This run's counters of all processors plus the totals stored at the
     // last write time (restart)
@@ -430,7 +430,7 @@ void Foam::RoughWallInteraction<CloudType>::info(Ostream& os)
 
     total.write
     (
-        os,
+        ROUGHWALL_INFO_STREAM,
         file_.valid() ? &file_() : nullptr,
         patches_,
         this->owner().mesh().time()
