@@ -1,7 +1,8 @@
 """The one harness of the OpenFOAM-level tests of roughWallInteraction, for
 both platforms:
 
-  openfoam13    OpenFOAM-13 (Foundation): `foamRun` with `solver functions;
+  openfoam13    OpenFOAM-13 (Foundation), and openfoam14, OpenFOAM-14, the
+                same: `foamRun` with `solver functions;
                 subSolver incompressibleFluid;` (frozen carrier) and the
                 `clouds` fvModel function object; constant/cloudProperties
                 with `type cloud;` (kinematic, no spin), `collidingCloud;`
@@ -78,7 +79,7 @@ def check(condition, message):
 # ---------------------------------------------------------------------------
 
 #: The platforms, first the project's first platform
-PLATFORMS = ("openfoam13", "openfoam1912")
+PLATFORMS = ("openfoam13", "openfoam14", "openfoam1912")
 
 #: Cloud kinds: does the parcel carry spin (angularMomentum)?
 SPIN = {"colliding": True, "kinematic": False, "DPM": True, "MPPIC": False}
@@ -92,9 +93,9 @@ class Platform:
             raise ValueError("unknown platform %r (%s)"
                              % (name, " or ".join(PLATFORMS)))
         self.name = name
-        self.foundation = name == "openfoam13"
+        self.foundation = name in ("openfoam13", "openfoam14")
         #: $WM_PROJECT_VERSION of the platform's environment
-        self.version = "13" if self.foundation else "v1912"
+        self.version = name[len("openfoam"):] if self.foundation else "v1912"
         #: Name of the (only) cloud, its properties file
         self.cloud = "cloud" if self.foundation else "kinematicCloud"
         self.properties = self.cloud + "Properties"
@@ -200,8 +201,8 @@ def ldd(path):
     return deps
 
 
-def check_openfoam13_libraries():
-    """OpenFOAM-13 runs: foamRun, the modules it loads, the parcel library
+def check_foundation_libraries(platform):
+    """OpenFOAM-13 or -14 runs: foamRun, the modules it loads, the parcel library
     and libroughWallInteraction.so resolve no OpenFOAM library to Debian's
     v1912 in /usr/lib (a known OpenFOAM library name, or any library of
     /usr/lib whose name is also one of $FOAM_LIBBIN's), and none is
@@ -211,14 +212,17 @@ def check_openfoam13_libraries():
         if os.path.basename(root) != "dummy":   # stand-ins of metis, scotch
             foam_libs.update(f for f in files if f.endswith(".so"))
     foam_run = shutil.which("foamRun")
-    check(foam_run is not None, "openfoam13: foamRun is on the PATH")
+    check(foam_run is not None, "%s: foamRun is on the PATH" % platform)
     binaries = [foam_run]
-    for name in (LIBRARY, "liblagrangianParcel.so",
-                 "libincompressibleFluid.so", "libfunctions.so",
-                 "libfiniteVolume.so"):
+    # The solver modules' libraries: lib<module>Solver.so from OpenFOAM-14
+    modules = ("libincompressibleFluid.so", "libfunctions.so") \
+        if platform.version == "13" \
+        else ("libincompressibleFluidSolver.so", "libfunctionsSolver.so")
+    for name in (LIBRARY, "liblagrangianParcel.so") + modules \
+            + ("libfiniteVolume.so",):
         path = find_library(name)
         check(path is not None and not path.startswith("/usr/lib"),
-              "openfoam13: %s found at %s" % (name, path))
+              "%s: %s found at %s" % (platform, name, path))
         binaries.append(path)
     bad = []
     for binary in binaries:
@@ -230,7 +234,8 @@ def check_openfoam13_libraries():
                     and not name.startswith("libmpi")):
                 bad.append("%s: %s => %s" % (os.path.basename(binary), name,
                                              path))
-    check(not bad, "openfoam13: no OpenFOAM library from /usr/lib or missing "
+    check(not bad, "%s: no OpenFOAM library from /usr/lib or missing "
+          % platform +
           "(ldd of %s)%s" % (", ".join(os.path.basename(b) for b in binaries),
                             ": " + "; ".join(bad) if bad else ""))
 
@@ -253,7 +258,7 @@ def check_environment(platform):
     print("using %s: %s (%s)" % (platform, lib, os.environ["WM_PROJECT_DIR"]),
           flush=True)
     if platform.foundation:
-        check_openfoam13_libraries()
+        check_foundation_libraries(platform)
 
 
 def main(test, platform_name=None):

@@ -68,15 +68,18 @@ class Scope:
     """The dictionary scope of a patches entry in the error message:
     v1912 roughWallInteractionCoeffs.patches.<entry>; OpenFOAM-13 scopes
     with '/' (roughWallInteractionCoeffs/patches, then '.' or '/' and the
-    entry), in the dictionary of the included roughWallSettings."""
+    entry), OpenFOAM-14 with '!' then '/'
+    (roughWallInteractionCoeffs!patches/<entry>), in the dictionary of the
+    included roughWallSettings."""
 
     def __init__(self, entry):
         self.entry = entry
 
     def texts(self, platform):
         if platform.foundation:
-            return ["roughWallInteractionCoeffs/patches%s%s" % (sep, self.entry)
-                    for sep in "./"]
+            return ["roughWallInteractionCoeffs%spatches%s%s"
+                    % (sep0, sep, self.entry)
+                    for sep0, sep in (("/", "."), ("/", "/"), ("!", "/"))]
         return ["roughWallInteractionCoeffs.patches." + self.entry]
 
 

@@ -97,7 +97,7 @@ Foam::FluidTorque<CloudType>::FluidTorque
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::FluidTorque<CloudType>::preEvolve()
+void Foam::FluidTorque<CloudType>::preEvolve(ROUGHWALL_EVOLVE_PARAMETERS)
 {
     clearFields();
 
@@ -139,7 +139,7 @@ void Foam::FluidTorque<CloudType>::preEvolve()
 
 
 template<class CloudType>
-void Foam::FluidTorque<CloudType>::postEvolve()
+void Foam::FluidTorque<CloudType>::postEvolve(ROUGHWALL_EVOLVE_PARAMETERS)
 {
     // No output (the base class would call write() at write times)
     clearFields();
@@ -147,12 +147,12 @@ void Foam::FluidTorque<CloudType>::postEvolve()
 
 
 template<class CloudType>
-void Foam::FluidTorque<CloudType>::postMove
+ROUGHWALL_POST_MOVE_RESULT Foam::FluidTorque<CloudType>::postMove
 (
     parcelType& p,
     const scalar dt,
     const point&,
-    bool& keepParticle
+    ROUGHWALL_POST_MOVE_LAST
 )
 {
     if constexpr (withSpin)
@@ -161,11 +161,11 @@ void Foam::FluidTorque<CloudType>::postMove
 
         if
         (
-            !keepParticle || !(dt > 0) || !(I > 0)
+            !ROUGHWALL_POST_MOVE_KEPT || !(dt > 0) || !(I > 0)
          || !vorticityInterpPtr_.valid()
         )
         {
-            return;
+            return ROUGHWALL_POST_MOVE_KEEP;
         }
 
         const tetIndices tetIs =
@@ -191,6 +191,8 @@ void Foam::FluidTorque<CloudType>::postMove
 
         p.angularMomentum() = I*(vorticity - decay*slip);
     }
+
+    return ROUGHWALL_POST_MOVE_KEEP;
 }
 
 

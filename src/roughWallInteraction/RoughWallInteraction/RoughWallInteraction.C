@@ -293,7 +293,7 @@ void Foam::RoughWallInteraction<CloudType>::checkCoeffsKeywords() const
     // reads the name of the velocity field, U, which this model never uses)
     roughWallInput::checkKeywords
     (
-        this->coeffDict(),
+        roughWallCompat::coeffs(*this),
         {"patches", "writeToFile", "writePrecision"},
         string
         (
@@ -314,7 +314,7 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
 )
 :
     PatchInteractionModel<CloudType>(dict, cloud, typeName),
-    patches_(this->coeffDict(), cloud.mesh()),
+    patches_(roughWallCompat::coeffs(*this), cloud.mesh()),
     stats_(patches_.nNonProcessor()),
     file_(),
     wallSpeedSqr_(patches_.nNonProcessor(), scalar(-1)),
@@ -337,14 +337,14 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
 
     const bool writeToFile = roughWallInput::readSwitchOrDefault
     (
-        this->coeffDict(), "writeToFile",
+        roughWallCompat::coeffs(*this), "writeToFile",
         "write the statistics under postProcessing/ (default: true)",
         true
     );
 
     const label precision = roughWallInput::readLabelOrDefault
     (
-        this->coeffDict(), "writePrecision",
+        roughWallCompat::coeffs(*this), "writePrecision",
         {1, 17, "significant digits of the statistics file (default: "
             "controlDict's writePrecision)"},
         IOstream::defaultPrecision()
@@ -436,10 +436,10 @@ bool Foam::RoughWallInteraction<CloudType>::correct
 
 
 template<class CloudType>
-void Foam::RoughWallInteraction<CloudType>::info(Ostream& os)
+void Foam::RoughWallInteraction<CloudType>::info(ROUGHWALL_INFO_PARAMETERS)
 {
-    // v1912: the system escapes
-    PatchInteractionModel<CloudType>::info(os);
+    // ESI: the system escapes
+    PatchInteractionModel<CloudType>::info(ROUGHWALL_INFO_ARGUMENTS);
 
     // This run's counters of all processors plus the totals stored at the
     // last write time (restart)
@@ -470,7 +470,7 @@ void Foam::RoughWallInteraction<CloudType>::info(Ostream& os)
 
     total.write
     (
-        os,
+        ROUGHWALL_INFO_STREAM,
         file_.valid() ? &file_() : nullptr,
         patches_,
         this->owner().mesh().time()

@@ -302,7 +302,7 @@ void Foam::roughWallPatchList::report(const polyBoundaryMesh& bm) const
         (
             keepsParcels
          && !isA<wallPolyPatch>(bm[patchi])
-         && !polyPatch::constraintType(bm[patchi].type())
+         && !roughWallCompat::isConstraint(bm[patchi])
         )
         {
             keptOnNonWalls.append(bm[patchi].name());
@@ -331,23 +331,23 @@ Foam::roughWallPatchList::roughWallPatchList
 )
 :
     entries_(readEntries(coeffs)),
-    patchEntry_(mesh.boundaryMesh().size(), -1),
-    patchNames_(mesh.boundaryMesh().names()),
-    nNonProcessor_(mesh.boundaryMesh().size()),
+    patchEntry_(roughWallCompat::boundary(mesh).size(), -1),
+    patchNames_(roughWallCompat::boundary(mesh).names()),
+    nNonProcessor_(roughWallCompat::boundary(mesh).size()),
     emptyComponent_(-1)
 {
     // OpenFOAM puts the processor patches last
-    forAll(mesh.boundaryMesh(), patchi)
+    forAll(roughWallCompat::boundary(mesh), patchi)
     {
-        if (isA<processorPolyPatch>(mesh.boundaryMesh()[patchi]))
+        if (isA<processorPolyPatch>(roughWallCompat::boundary(mesh)[patchi]))
         {
             nNonProcessor_ = patchi;
             break;
         }
     }
 
-    mapPatches(coeffs, mesh.boundaryMesh());
-    report(mesh.boundaryMesh());
+    mapPatches(coeffs, roughWallCompat::boundary(mesh));
+    report(roughWallCompat::boundary(mesh));
 
     if (anyRough())
     {

@@ -29,7 +29,7 @@ License
 
 #include "roughWallStatistics.H"
 #include "Pstream.H"
-#include "PstreamCombineReduceOps.H"
+#include "foamCompat.H"
 #include "Time.H"
 #include "OSspecific.H"
 #include "roughWallLimits.hpp"
@@ -92,11 +92,8 @@ Foam::roughWallStatistics Foam::roughWallStatistics::reduced() const
 {
     roughWallStatistics total(*this);
 
-    Pstream::listCombineGather(total.counts_, plusEqOp<label>());
-    Pstream::listCombineScatter(total.counts_);
-
-    Pstream::listCombineGather(total.sums_, plusEqOp<scalar>());
-    Pstream::listCombineScatter(total.sums_);
+    roughWallCompat::sumOverProcessors(total.counts_);
+    roughWallCompat::sumOverProcessors(total.sums_);
 
     return total;
 }

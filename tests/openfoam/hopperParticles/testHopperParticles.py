@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""OpenFOAM-13's tutorial incompressibleFluid/hopperParticles with
-roughWallInteraction, on 2 ranks.
+"""The tutorial incompressibleFluid/hopperParticles of OpenFOAM-13 or -14
+(the release the test runs on) with roughWallInteraction, on 2 ranks.
 
 The tutorial (two stages: hopperInitialState fills a hopper with 3300
 parcels of 6 mm, a collidingCloud with pairCollision and the wall model
@@ -58,11 +58,11 @@ loaded libroughWallInteraction.so and liblagrangianParcel.so resolves none
 there.  Control (serial, --no-control skips it): hopperInitialState with
 the tutorial's wall-type `walls`, same settings: walls_hits = 0.
 
-Usage: testHopperParticles.py [--platform openfoam13] [--work DIR]
+Usage: testHopperParticles.py [--platform openfoam13|openfoam14] [--work DIR]
            [--rows N] [--endTime1 T] [--endTime2 T] [--no-control]
-Run it in the OpenFOAM-13 environment, as ctest does:
+Run it in the release's environment, as ctest does:
     etc/openfoamEnv openfoam13 /usr/bin/python3 testHopperParticles.py
-        --work DIR
+        --platform openfoam13 --work DIR
 
 SPDX-License-Identifier: GPL-3.0-or-later
 """
@@ -138,7 +138,8 @@ SYSTEM_OPENFOAM = re.compile(
 
 def parse_args():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("--platform", default="openfoam13", choices=["openfoam13"])
+    p.add_argument("--platform", default="openfoam13",
+                   choices=["openfoam13", "openfoam14"])
     p.add_argument("--work", default=".")
     p.add_argument("--rows", type=int, default=6,
                    help="keep the lowest ROWS rows of the tutorial's 3300 "
@@ -157,13 +158,13 @@ def parse_args():
 # ---------------------------------------------------------------------------
 
 def tutorial_path():
-    """The tutorial in the OpenFOAM-13 installation, or a clear failure."""
+    """The tutorial in the OpenFOAM installation, or a clear failure."""
     project = os.environ.get("WM_PROJECT_DIR", "")
     path = os.path.join(project, TUTORIAL)
     if not os.path.isfile(os.path.join(path, "Allrun")):
         raise t.TestFailure(
-            "OpenFOAM-13's tutorial %s is not there: %s does not exist "
-            "($WM_PROJECT_DIR = %r). This test copies it from the OpenFOAM-13 "
+            "OpenFOAM's tutorial %s is not there: %s does not exist "
+            "($WM_PROJECT_DIR = %r). This test copies it from the OpenFOAM "
             "installation at run time; use an installation with its "
             "tutorials/ folder (the source tree has it)"
             % (TUTORIAL, path, project))
@@ -378,7 +379,7 @@ def solve(stage, log="log.foamRun", timeout=900):
 
 
 def check_loaded_libraries(name, seen, exe):
-    """The running foamRun processes mapped OpenFOAM-13's libraries only;
+    """The running foamRun processes mapped the release's libraries only;
     ldd of the binary and of the parcel and rough-wall libraries they
     mapped resolves none to /usr/lib."""
     t.check(len(seen) == NPROCS,
@@ -714,4 +715,4 @@ def test():
 
 
 if __name__ == "__main__":
-    t.main(test, "openfoam13")
+    t.main(test, parse_args().platform)
