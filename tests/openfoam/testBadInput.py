@@ -181,6 +181,35 @@ CRASH_SIGNS = ["sigSegv::sigHandler", "sigFpe::sigHandler",
                "Segmentation fault", "core dumped", "printStack"]
 
 
+def check_bad_cases(case, platform, cases):
+    """Run case once per (name, settings, texts) of cases: each must stop
+    cleanly (rc != 0, no crash) with a FatalIOError whose message has the
+    texts, the settings file and, for a Scope, the platform's form of it."""
+    # The file named in the message: v1912 names an #include'd dictionary
+    # after the including file, OpenFOAM-13 after the included one
+    settings_file = "constant/roughWallSettings" if platform.foundation \
+        else "constant/" + platform.properties
+    for i, (name, text, expected) in enumerate(cases):
+        case.write_settings(text)
+        log = "log.bad%02d" % i
+        rc, _ = case.solve(log, check_rc=False)
+        out = case.log(log)
+        expected = [e.texts(platform) if isinstance(e, Scope) else e
+                    for e in ["FOAM FATAL IO ERROR", settings_file] + expected]
+        missing = [e for e in expected if not (
+            any(alt in out for alt in e) if isinstance(e, list) else e in out)]
+        crashed = [s for s in CRASH_SIGNS if s in out] \
+            + (["signal %d" % -rc] if rc < 0 else [])
+        t.check(rc != 0 and not missing and not crashed,
+                "%s: rc %d, %s%s" % (
+                    name, rc,
+                    "missing text %s" % missing if missing else
+                    "error names %s" % ", ".join(
+                        e if isinstance(e, str) else " or ".join(e)
+                        for e in expected[1:]),
+                    ", CRASH %s" % crashed if crashed else ""))
+
+
 def parse_args():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     t.add_platform_args(p)
@@ -211,29 +240,7 @@ def test():
     t.check(rc == 0 and not os.path.exists(stats_dir),
             "control: writeToFile false runs and writes no statistics file")
 
-    # The file named in the message: v1912 names an #include'd dictionary
-    # after the including file, OpenFOAM-13 after the included one
-    settings_file = "constant/roughWallSettings" if platform.foundation \
-        else "constant/" + platform.properties
-    for i, (name, text, expected) in enumerate(CASES):
-        case.write_settings(text)
-        log = "log.bad%02d" % i
-        rc, _ = case.solve(log, check_rc=False)
-        out = case.log(log)
-        expected = [e.texts(platform) if isinstance(e, Scope) else e
-                    for e in ["FOAM FATAL IO ERROR", settings_file] + expected]
-        missing = [e for e in expected if not (
-            any(alt in out for alt in e) if isinstance(e, list) else e in out)]
-        crashed = [s for s in CRASH_SIGNS if s in out] \
-            + (["signal %d" % -rc] if rc < 0 else [])
-        t.check(rc != 0 and not missing and not crashed,
-                "%s: rc %d, %s%s" % (
-                    name, rc,
-                    "missing text %s" % missing if missing else
-                    "error names %s" % ", ".join(
-                        e if isinstance(e, str) else " or ".join(e)
-                        for e in expected[1:]),
-                    ", CRASH %s" % crashed if crashed else ""))
+    check_bad_cases(case, platform, CASES)
 
     # Control: without libs the model is unknown (troubleshooting symptom)
     case = t.wall_impact_case(platform, os.path.join(args.work, "case"),

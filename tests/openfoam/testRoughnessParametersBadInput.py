@@ -82,27 +82,7 @@ def test():
             "control: valid roughness parameters run (rc %d) and are logged"
             % rc)
 
-    settings_file = "constant/roughWallSettings" if platform.foundation \
-        else "constant/" + platform.properties
-    for i, (name, text, expected) in enumerate(CASES):
-        case.write_settings(text)
-        log = "log.bad%02d" % i
-        rc, _ = case.solve(log, check_rc=False)
-        out = case.log(log)
-        expected = [e.texts(platform) if isinstance(e, b.Scope) else e
-                    for e in ["FOAM FATAL IO ERROR", settings_file] + expected]
-        missing = [e for e in expected if not (
-            any(alt in out for alt in e) if isinstance(e, list) else e in out)]
-        crashed = [s for s in b.CRASH_SIGNS if s in out] \
-            + (["signal %d" % -rc] if rc < 0 else [])
-        t.check(rc != 0 and not missing and not crashed,
-                "%s: rc %d, %s%s" % (
-                    name, rc,
-                    "missing text %s" % missing if missing else
-                    "error names %s" % ", ".join(
-                        e if isinstance(e, str) else " or ".join(e)
-                        for e in expected[1:]),
-                    ", CRASH %s" % crashed if crashed else ""))
+    b.check_bad_cases(case, platform, CASES)
 
 
 if __name__ == "__main__":
