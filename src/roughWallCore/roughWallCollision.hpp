@@ -119,6 +119,10 @@ double sampleLateralTilt(double Delta, Uniform01& uniform01)
     return 0;
 }
 
+//- Smallest squared length normalised by its square root: far above the
+//  subnormal range (2.2e-308), where squares lose precision
+constexpr double minNormalizableSquare = 1e-280;
+
 //- The plane of incidence of a velocity on the mean wall
 struct IncidenceFrame
 {
@@ -182,6 +186,15 @@ IncidenceFrame incidenceFrame
         // wait for the second projection
         const double alpha =
             fastMath::atan2FirstQuadrant(approach, std::sqrt(firstLength2));
+        if (length2 < minNormalizableSquare)
+        {
+            // A tangential part below 1e-140 of a direction of order one:
+            // its squared length is subnormal and has lost bits, and so
+            // would the unit tangent (|t|^2 - 1 = 8e-8 was seen, and the
+            // facet normal and the energy with it). Scale it up first
+            tangential /= tangential.cwiseAbs().maxCoeff();
+            return {tangential.normalized(), alpha};
+        }
         return {tangential*(1/std::sqrt(length2)), alpha};
     }
     return
@@ -276,7 +289,11 @@ RoughWallReport collideWithRoughWall
         // velocities) and overflows above 1e154: scale such v first
         Vec3 direction = velocity;
         const double speed2 = direction.squaredNorm();
-        if (!(speed2 > 1e-280 && speed2 < 1e280))
+        if
+        (
+            !(speed2 > detail::minNormalizableSquare
+           && speed2 < 1/detail::minNormalizableSquare)
+        )
         {
             direction /= direction.cwiseAbs().maxCoeff();
         }

@@ -476,7 +476,7 @@ void Foam::RoughWallInteraction<CloudType>::info(ROUGHWALL_INFO_PARAMETERS)
         this->owner().mesh().time()
     );
 
-    reportWallVelocity(os);
+    reportWallVelocity(ROUGHWALL_INFO_STREAM);
 
     if (this->writeTime())
     {

@@ -355,9 +355,11 @@ def spin_up(r):
 def smoke_test(r):
     c = checkResults
     text = ("Criteria (`scripts/checkResults.py`), each named after the "
-            "faults it catches: the variants %s ordered by %s, each "
+            "faults it catches: the variants ordered by %s, each "
             "difference larger than %g combined standard errors (no "
-            "roughness, a roughness level lost); on the smooth floor the "
+            "roughness, a roughness level lost; the fraction in the upper "
+            "half saturates at 50 %%, uniform, in both rough variants, so it "
+            "orders only the smooth one below them); on the smooth floor the "
             "beads slower than the air at their centre, u(r) + (h - r) "
             "u_tau^2/nu (moving walls); in `%s`, whose spin changes at the "
             "walls only, a negative mean spin by more than %g standard errors "
@@ -365,8 +367,8 @@ def smoke_test(r):
             "update); %s of each variant within %g combined standard errors "
             "of the committed result `results/` (anything that moves a "
             "statistic)."
-            % (", ".join("`%s`" % v for v in c.ORDER),
-               " and by ".join("`%s`" % k for k in c.ORDERED), c.MARGIN_SE,
+            % ("; ".join("`%s` (%s)" % (k, " < ".join(v))
+                         for k, v in c.ORDERED.items()), c.MARGIN_SE,
                c.WALL_SPIN, c.MARGIN_SE, ", ".join("`%s`" % k for k in c.BAND),
                c.BAND_SE))
     if not r.smoke:
