@@ -412,6 +412,40 @@ def spin_effect(r):
 #: standard errors
 SPIN_UP_SE = 3.0
 
+def platforms(r):
+    """The same run on the other Foundation release (results/openfoam13/)
+    against the committed results: the largest difference of each
+    statistic that has a standard error, in combined standard errors"""
+    other_dir = os.path.join(r.dir, "openfoam13")
+    other = {x["variant"]: x for x in
+             read_rows(os.path.join(other_dir, "summary.csv"))}
+    info = read_info(os.path.join(other_dir, "runInfo"))
+    keys = [k for k in r.summary[r.variants[0]]
+            if k + "_se" in r.summary[r.variants[0]]]
+    rows = []
+    for v in r.variants:
+        if v not in other:
+            continue
+        z_max, key_max = 0.0, ""
+        for k in keys:
+            a, b = r.s(v, k), number(other[v], k)
+            se = math.hypot(r.s(v, k + "_se"), number(other[v], k + "_se"))
+            if not all(math.isfinite(x) for x in (a, b, se)):
+                continue
+            z = abs(a - b)/se if se > 0 else (0.0 if a == b else math.inf)
+            if z > z_max:
+                z_max, key_max = z, k
+        rows.append([name(r, v), "%.2f" % z_max, "`%s`" % key_max if key_max
+                     else "-"])
+    return ("OpenFOAM-%s at commit %s (`%s`), against these results of "
+            "OpenFOAM-%s: per variant, the largest difference of the %d "
+            "statistics with a standard error, in combined standard errors:\n\n"
+            % (info["openfoam"].split()[0], info["commit"], info["command"],
+               r.info["openfoam"].split()[0], len(keys))
+            + table(["variant", "largest difference / combined s.e.",
+                     "statistic"], rows))
+
+
 BLOCKS = {
     "provenance": provenance,
     "spinUp": spin_up,
@@ -422,6 +456,7 @@ BLOCKS = {
     "spinEffect": spin_effect,
     "runtimes": runtimes,
     "smokeTest": smoke_test,
+    "platforms": platforms,
 }
 
 
