@@ -16,10 +16,8 @@ import re
 import shutil
 import statistics
 import subprocess
-import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import benchCommon as bc  # noqa: E402
+import benchCommon as bc
 
 TARGET_NS = 60
 TARGET_RATIO = 10

@@ -23,8 +23,8 @@ load hits every variant alike), on one platform (--platform):
 Run it in the platform's environment only (benchmarks/run does):
   etc/openfoamEnv openfoam13 /usr/bin/python3 openfoamCost.py --platform openfoam13
 
-Case: benchmarks/openfoam/wallBox, made and run with the OpenFOAM tests'
-harness tests/openfoam/foamTestCase.py (the template is shared by the two
+Case: benchmarks/openfoam/wallBox, made and run with the
+package foamcase (src/python/foamcase; the template is shared by the two
 platforms; FoamCase writes the platform's files, the injector, the solver
 entries). Ballistic parcels (no forces, no gravity, 110 um glass) in a
 closed 0.1 m box of 2x1x1 cells with maxCo 1, injected at (40 27 13) m/s,
@@ -104,11 +104,9 @@ import statistics
 import subprocess
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import benchCommon as bc  # noqa: E402
+import benchCommon as bc
 
-sys.path.insert(0, os.path.join(bc.ROOT, "tests", "openfoam"))
-import foamTestCase as fc  # noqa: E402
+import foamcase as fc
 
 TEMPLATE = os.path.join(bc.ROOT, "benchmarks", "openfoam", "wallBox")
 L = 0.1
@@ -165,8 +163,8 @@ class Runner:
     def check_environment(self):
         """The platform's environment, the library (and the baseline's)"""
         try:
-            fc.check_environment(self.platform)
-        except fc.TestFailure as failure:
+            fc.environment_library(self.platform)
+        except fc.FoamError as failure:
             sys.exit("openfoamCost.py: %s" % failure)
         if self.baseline and not os.path.isfile(
                 os.path.join(self.baseline, fc.LIBRARY)):
