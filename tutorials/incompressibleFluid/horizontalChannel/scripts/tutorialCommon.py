@@ -12,8 +12,8 @@ import foamcase as fc
 
 #: The checkout whose foamcase the scripts use (its tutorial is copied by
 #: the tests that run it elsewhere)
-REPO = os.path.dirname(os.path.dirname(os.path.dirname(
-    os.path.abspath(fc.__file__))))
+REPO = os.path.abspath(os.path.join(os.path.dirname(fc.__file__), "..", "..",
+                                    ".."))
 
 #: Name of the cloud (the clouds fvModel's default)
 CLOUD = "cloud"
