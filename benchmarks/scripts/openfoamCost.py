@@ -446,7 +446,8 @@ def measure(runner, args):
                 hits = r["hits"] if MODEL_FILE[variant] == "rough" \
                     else smooth_hits
                 row = dict(platform=runner.platform.name, tag=runner.tag,
-                           baseline=runner.baseline or "",
+                           baseline=bc.portable_path(runner.baseline)
+                           if runner.baseline else "",
                            mesh=MESH_NAMES[boxes], parcels=parcels, np=np,
                            round=rnd, variant=variant, end_time=end_time,
                            steps=r["steps"], hits=hits,
@@ -944,7 +945,8 @@ def callgrind(runner, args):
         total, calls, parts, callees = callgrind_profile(
             out, MODEL_ENTRY[variant])
         row = dict(platform=runner.platform.name, tag=runner.tag,
-                   baseline=runner.baseline or "",
+                   baseline=bc.portable_path(runner.baseline)
+                   if runner.baseline else "",
                    variant=variant, parcels=parcels, end_time=end_time,
                    hits=hits, total=total, correct_calls=calls,
                    correct_inclusive=int(sum(parts.values())))
@@ -1189,7 +1191,8 @@ def tutorial_measure(args):
                        upperFraction=summary["upperFraction"],
                        baseline=baseline_name(args.baseline_lib)
                        if variant == TUTORIAL_BASE else "",
-                       lib_path=":".join(variants[variant][1]),
+                       lib_path=":".join(bc.portable_path(d)
+                                         for d in variants[variant][1]),
                        load=open("/proc/loadavg").read().split()[0])
             rows.append(row)
             print(row, flush=True)

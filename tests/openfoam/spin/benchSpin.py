@@ -18,7 +18,7 @@ parcel-step over "none".
 
 Usage (in one platform's environment):
   etc/openfoamEnv openfoam13 python3 tests/openfoam/spin/benchSpin.py \\
-      --platform openfoam13 --work /tmp/benchSpin --output spin-cost.csv
+      --platform openfoam13 --work build/benchSpin --output spin-cost.csv
 
 SPDX-License-Identifier: GPL-3.0-or-later
 """
