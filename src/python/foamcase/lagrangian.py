@@ -89,6 +89,8 @@ def read_positions(path, mesh):
             and np.all(coords > -tol)):
         raise FoamError("%s: barycentric coordinates outside [0, 1] or not "
                         "summing to 1 (tolerance %.1e)" % (path, tol))
+    if mesh is None:
+        raise FoamError("%s: barycentric positions need the mesh" % path)
     if not isinstance(mesh, MeshGeometry):
         mesh = MeshGeometry(os.path.join(mesh, "constant", "polyMesh"))
     return mesh.positions(coords, cells, faces, tets), cells
