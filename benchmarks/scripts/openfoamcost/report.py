@@ -18,6 +18,14 @@ from .parse import baseline_name
 PLATFORM_NAMES = {"openfoam13": "OpenFOAM-13", "openfoam1912": "OpenFOAM v1912"}
 
 
+def write_markdown(name, lines):
+    """A table's lines to benchmarks/results/name and to the terminal"""
+    text = "\n".join(lines) + "\n"
+    with open(os.path.join(bc.RESULTS, name), "w") as f:
+        f.write(text)
+    print(text)
+
+
 def median_range(values, digits=3):
     if not values:
         return "-"
@@ -259,11 +267,7 @@ def table(tag, summary, rows):
                       "the tracking, the cloud and the parcel library run at "
                       "-O1")]
     lines += two_box_table(rows)
-    text = "\n".join(lines) + "\n"
-    with open(os.path.join(bc.RESULTS, "openfoam-cost.%s.md" % tag),
-              "w") as f:
-        f.write(text)
-    print(text)
+    write_markdown("openfoam-cost.%s.md" % tag, lines)
 
 
 def figure(summaries):
@@ -365,11 +369,7 @@ def callgrind_table(tag, rows):
               "function they are in (OpenFOAM's random generator, "
               "statistics, patchData); callees' shares by their own "
               "breakdown."]
-    text = "\n".join(lines) + "\n"
-    with open(os.path.join(bc.RESULTS, "openfoam-callgrind.%s.md" % tag),
-              "w") as f:
-        f.write(text)
-    print(text)
+    write_markdown("openfoam-callgrind.%s.md" % tag, lines)
 
 
 def tutorial_stem(tag):
@@ -445,8 +445,4 @@ def tutorial_table(rows, tag=None):
                  "LD_LIBRARY_PATH (the same case, parcels and time steps): "
                  "rough2.5/%s is the run time after against before." % (
                      TUTORIAL_BASE, base[0], TUTORIAL_BASE)]
-    text = "\n".join(text) + "\n"
-    with open(os.path.join(bc.RESULTS, tutorial_stem(tag) + ".md"),
-              "w") as f:
-        f.write(text)
-    print(text)
+    write_markdown(tutorial_stem(tag) + ".md", text)
