@@ -13,6 +13,25 @@ RESULTS = os.path.join(ROOT, "benchmarks", "results")
 FIGURES = os.path.join(ROOT, "docs", "figures")
 
 
+def portable_path(path):
+    """path as the committed results record it, never this machine's
+    absolute path: relative to the checkout, or $ROUGHWALL_CACHE/...,
+    $HOME/..., else .../<last folder>"""
+    p = os.path.abspath(path)
+    if p == ROOT or p.startswith(ROOT + os.sep):
+        return os.path.relpath(p, ROOT)
+    for var in ("ROUGHWALL_CACHE", "HOME"):
+        base = os.environ.get(var)
+        if base and p.startswith(os.path.abspath(base) + os.sep):
+            return "$%s/%s" % (var, os.path.relpath(p, base))
+    return ".../" + os.path.basename(p)
+
+
+def portable_text(text):
+    """Tool output (profiles) with the checkout's absolute path removed"""
+    return text.replace(ROOT + os.sep, "")
+
+
 def write_csv(name, rows):
     """rows (dicts with the same keys) to benchmarks/results/name (or to name
     if it is an absolute path)"""

@@ -16,10 +16,8 @@ import re
 import shutil
 import statistics
 import subprocess
-import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import benchCommon as bc  # noqa: E402
+import benchCommon as bc
 
 TARGET_NS = 60
 TARGET_RATIO = 10
@@ -372,7 +370,7 @@ def profile(args):
              "--percent-limit", "0.5"], capture_output=True,
             text=True).stdout)
     if shutil.which("valgrind") and args.hit_loop:
-        cg = os.path.join(bc.RESULTS, "..", "..", "build", "callgrind.hit")
+        cg = os.path.join(bc.ROOT, "build", "callgrind.hit")
         subprocess.run(["valgrind", "--tool=callgrind",
                         "--callgrind-out-file=" + cg, args.hit_loop, "rough",
                         "1", "0", "3", "mix", "8", "200000"], check=True,
@@ -384,7 +382,7 @@ def profile(args):
             capture_output=True, text=True).stdout[:12000])
     path = os.path.join(bc.RESULTS, "hit-profile.txt")
     with open(path, "w") as f:
-        f.write("\n".join(out))
+        f.write(bc.portable_text("\n".join(out)))
     print("wrote " + path)
 
 

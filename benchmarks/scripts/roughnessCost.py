@@ -17,10 +17,8 @@ import json
 import os
 import statistics
 import subprocess
-import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import benchCommon as bc  # noqa: E402
+import benchCommon as bc
 
 LABELS = {
     "roughness/delta:constant/alpha:mix": "constant Delta",

@@ -16,10 +16,8 @@ import argparse
 import math
 import os
 import subprocess
-import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import benchCommon as bc  # noqa: E402
+import benchCommon as bc
 
 SAMPLERS = [  # name, label, color, marker
     ("exact", "exact (core sampleFacetAngle)", "C0", "o"),

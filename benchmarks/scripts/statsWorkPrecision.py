@@ -23,11 +23,9 @@ import io
 import math
 import os
 import subprocess
-import sys
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import benchCommon as bc  # noqa: E402
+import benchCommon as bc
 
 ALPHAS = "1:1:89"
 DIGITS = "17"      # every double exactly: no printing floor

@@ -38,10 +38,8 @@ import math
 import os
 import shutil
 import subprocess
-import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import benchCommon as bc  # noqa: E402
+import benchCommon as bc
 
 TUTORIAL = os.path.join(bc.ROOT, "tutorials", "incompressibleFluid",
                         "horizontalChannel")

@@ -29,6 +29,7 @@ import os
 import numpy as np
 
 import foamTestCase as t
+import foamcase as fc
 
 END_TIME = "0.05"
 
@@ -46,17 +47,17 @@ def parse_args():
 
 def run_case(args, two_d, parcels):
     name = "case2D" if two_d else "case3D"
-    case = t.wall_impact_case(t.Platform(args.platform),
+    case = t.wall_impact_case(fc.Platform(args.platform),
                               os.path.join(args.work, name), args.cloud,
                               two_d=two_d, parcels=parcels, settings=SETTINGS)
     case.mesh()
     case.solve()
-    fields = ["U", "d"] + (["angularMomentum"] if t.SPIN[args.cloud] else [])
+    fields = ["U", "d"] + (["angularMomentum"] if fc.SPIN[args.cloud] else [])
     return case, case.read_cloud(END_TIME, fields)
 
 
 def reference_function(args, lateral_tilt):
-    rows = t.reference(t.SPIN[args.cloud], 8, sorted(t.ANGLES),
+    rows = t.reference(fc.SPIN[args.cloud], 8, sorted(t.ANGLES),
                        lateral_tilt=lateral_tilt)
     return lambda angle, d: (rows[angle], 8)
 
@@ -73,12 +74,12 @@ def test():
     t.check(len(U) == n_total, "2-D: all %d parcels kept" % n_total)
     t.check(bool(np.all(U[:, 1] > 0)), "2-D: every parcel leaves the wall")
     _, rows = case.read_statistics()
-    t.check(t.column(rows[-1], "lowerWall_hits") == n_total,
+    t.check(fc.column(rows[-1], "lowerWall_hits") == n_total,
             "2-D: every parcel hit the wall once")
     t.check(bool(np.all(U[:, 2] == 0)),
             "2-D: v_z == 0 exactly for every parcel (max |v_z| = %g)"
             % np.abs(U[:, 2]).max())
-    if t.SPIN[args.cloud]:
+    if fc.SPIN[args.cloud]:
         L = parcels["angularMomentum"]
         t.check(bool(np.all(L[:, 0] == 0) and np.all(L[:, 1] == 0)),
                 "2-D: omega_x == omega_y == 0 exactly for every parcel "
@@ -97,7 +98,7 @@ def test():
     t.check(np.count_nonzero(U3[:, 2]) > 0.9 * len(U3),
             "3-D control with lateralTilt: v_z != 0 for %d of %d parcels"
             % (np.count_nonzero(U3[:, 2]), len(U3)))
-    if t.SPIN[args.cloud]:
+    if fc.SPIN[args.cloud]:
         L3 = parcels3["angularMomentum"]
         t.check(np.count_nonzero(L3[:, 0]) > 0.9 * len(L3),
                 "3-D control with lateralTilt: omega_x != 0 for %d of %d"

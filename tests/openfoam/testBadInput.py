@@ -28,6 +28,7 @@ import os
 import shutil
 
 import foamTestCase as t
+import foamcase as fc
 
 ROUGH = {
     "type": "rough",
@@ -218,7 +219,7 @@ def parse_args():
 
 def test():
     args = parse_args()
-    platform = t.Platform(args.platform)
+    platform = fc.Platform(args.platform)
     case = t.wall_impact_case(platform, os.path.join(args.work, "case"),
                               args.cloud, two_d=True, parcels=10)
     case.set_control(endTime="0.001")

@@ -23,6 +23,7 @@ import os
 import numpy as np
 
 import foamTestCase as t
+import foamcase as fc
 
 
 def parse_args():
@@ -35,7 +36,7 @@ def parse_args():
 def test():
     args = parse_args()
     n = args.parcels
-    case = t.wall_impact_case(t.Platform(args.platform),
+    case = t.wall_impact_case(fc.Platform(args.platform),
                               os.path.join(args.work, "case"), args.cloud,
                               parcels=n)
     case.mesh()
@@ -43,7 +44,7 @@ def test():
     case.set_control(endTime="0.025", writeInterval="25")
     case.solve("log.run1")
     _, rows1 = case.read_statistics()
-    hits1 = t.column(rows1[-1], "lowerWall_hits")
+    hits1 = fc.column(rows1[-1], "lowerWall_hits")
     t.check(hits1 == 2 * n,
             "first run: the 30 and 60 deg parcels hit before t = 0.025 "
             "(%d hits)" % hits1)

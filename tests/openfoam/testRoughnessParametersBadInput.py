@@ -19,6 +19,7 @@ SPDX-License-Identifier: GPL-3.0-or-later
 import os
 
 import foamTestCase as t
+import foamcase as fc
 import testBadInput as b
 
 
@@ -69,7 +70,7 @@ CASES = [
 
 def test():
     args = b.parse_args()
-    platform = t.Platform(args.platform)
+    platform = fc.Platform(args.platform)
     case = t.wall_impact_case(platform, os.path.join(args.work, "case"),
                               args.cloud, two_d=True, parcels=10)
     case.set_control(endTime="0.001")

@@ -36,6 +36,7 @@ import os
 import numpy as np
 
 import foamTestCase as t
+import foamcase as fc
 
 #: wall type, its coefficients, outlet type, end time
 TYPES = [
@@ -81,7 +82,7 @@ def parse_args():
 
 
 def run(args, name, settings, end_time):
-    case = t.wall_impact_case(t.Platform(args.platform),
+    case = t.wall_impact_case(fc.Platform(args.platform),
                               os.path.join(args.work, name), args.cloud,
                               parcels=args.parcels, settings=settings)
     case.set_control(endTime=end_time)
@@ -91,7 +92,7 @@ def run(args, name, settings, end_time):
     for d in case.cloud_dirs(end_time):
         if os.path.isdir(d):
             for field in ("U", "active", "positions"):
-                text = t.read_text(os.path.join(d, field))
+                text = fc.read_text(os.path.join(d, field))
                 # Compare the data, not the header
                 fields[field] = text[text.index("// * *"):]
     return case, case.log(), fields
@@ -99,7 +100,7 @@ def run(args, name, settings, end_time):
 
 def test():
     args = parse_args()
-    platform = t.Platform(args.platform)
+    platform = fc.Platform(args.platform)
     n_total = 3 * args.parcels
     for i, (kind, coeffs, outlet, end_time) in enumerate(TYPES):
         label = "%s%s, outlet %s" % (kind, " (%s)" % coeffs if coeffs else "",
@@ -115,15 +116,15 @@ def test():
             t.check(fields_r[name] == fields_s[name],
                     "%s: parcel field %s identical to standardWallInteraction"
                     % (label, name))
-        left_r, left_s = t.final_parcels(log_r), t.final_parcels(log_s)
+        left_r, left_s = fc.final_parcels(log_r), fc.final_parcels(log_s)
         t.check(left_r == left_s >= 0,
                 "%s: %d parcels at the end, standardWallInteraction %d"
                 % (label, left_r, left_s))
         if not platform.foundation:
-            t.check(t.system_escapes(log_r) == t.system_escapes(log_s) >= 0,
+            t.check(fc.system_escapes(log_r) == fc.system_escapes(log_s) >= 0,
                     "%s: system escapes %d, standardWallInteraction %d"
-                    % (label, t.system_escapes(log_r),
-                       t.system_escapes(log_s)))
+                    % (label, fc.system_escapes(log_r),
+                       fc.system_escapes(log_s)))
 
         _, rows = case_r.read_statistics()
         last = rows[-1]
@@ -131,20 +132,20 @@ def test():
             active = case_r.read_cloud(end_time, ["active"])["active"]
             stuck = int(np.count_nonzero(active == 0))
             t.check(stuck == n_total
-                    and t.column(last, "lowerWall_nStick") == stuck,
+                    and fc.column(last, "lowerWall_nStick") == stuck,
                     "stick: statistics file lowerWall_nStick = %d stuck "
-                    "parcels" % t.column(last, "lowerWall_nStick"))
+                    "parcels" % fc.column(last, "lowerWall_nStick"))
         if outlet == "none":
             if platform.foundation:
                 written = len(case_r.read_cloud(end_time, ["d"])["d"])
-                reported = t.parcel_counts(log_r)[platform.written_report]
+                reported = fc.parcel_counts(log_r)[platform.written_report]
                 removed = n_total - left_r
                 t.check(0 < removed < n_total and written == reported,
                         "none: some parcels left through the outlet (%d of "
                         "%d removed; %d written = the log's count of the "
                         "written step)" % (removed, n_total, written))
             else:
-                escapes = t.system_escapes(log_r)
+                escapes = fc.system_escapes(log_r)
                 t.check(0 < escapes < n_total and fields_r
                         and left_r == n_total - escapes,
                         "none: some parcels left through the outlet (%d of "
@@ -152,9 +153,9 @@ def test():
         if kind == "escape":
             written = len(case_r.read_cloud(end_time, ["d"])["d"])
             t.check(written == 0 and left_r == 0
-                    and t.column(last, "lowerWall_nEscape") == n_total,
+                    and fc.column(last, "lowerWall_nEscape") == n_total,
                     "escape: all parcels left (%d written), lowerWall_nEscape "
-                    "= %d" % (written, t.column(last, "lowerWall_nEscape")))
+                    "= %d" % (written, fc.column(last, "lowerWall_nEscape")))
 
 
 if __name__ == "__main__":

@@ -50,6 +50,7 @@ import re
 import numpy as np
 
 import foamTestCase as t
+import foamcase as fc
 
 END_TIME = "0.05"
 
@@ -96,8 +97,8 @@ def profile_delta(parameters, d):
 
 def test():
     args = parse_args()
-    platform = t.Platform(args.platform)
-    spin = t.SPIN[args.cloud]
+    platform = fc.Platform(args.platform)
+    spin = fc.SPIN[args.cloud]
     case = t.wall_impact_case(platform, os.path.join(args.work, "case"),
                               args.cloud, parcels=args.parcels,
                               settings=settings(args.roughness,
@@ -110,7 +111,7 @@ def test():
     if args.np > 1:
         t.check(bool(re.search(r"nProcs\s*:\s*%d\b" % args.np, case.log())),
                 "the run was parallel on %d processors" % args.np)
-        counts = [len(t.read_field(os.path.join(dd, "d")))
+        counts = [len(fc.read_field(os.path.join(dd, "d")))
                   if os.path.exists(os.path.join(dd, "d")) else 0
                   for dd in case.cloud_dirs(END_TIME)]
         t.check(len(counts) == args.np and min(counts) > 0,
@@ -172,7 +173,7 @@ def test():
     last = rows[-1]
 
     def col(name):
-        return t.column(last, name)
+        return fc.column(last, name)
 
     def close(a, b, rel=1e-8):
         return abs(a - b) <= rel * max(abs(a), abs(b), 1e-300)

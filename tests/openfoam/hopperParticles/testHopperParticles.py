@@ -81,10 +81,9 @@ import time
 import numpy as np
 
 sys.dont_write_bytecode = True
-sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(
-    __file__))))
 
-import foamTestCase as t  # noqa: E402
+import foamTestCase as t
+import foamcase as fc
 
 #: The tutorial, relative to $WM_PROJECT_DIR
 TUTORIAL = os.path.join("tutorials", "incompressibleFluid", "hopperParticles")
@@ -174,12 +173,12 @@ def tutorial_path():
 def edit(path, pattern, replacement, count=1, flags=re.M):
     """Replace pattern in a file of the copied tutorial exactly count times;
     anything else means the tutorial is not the one this test knows."""
-    text, n = re.subn(pattern, replacement, t.read_text(path), flags=flags)
+    text, n = re.subn(pattern, replacement, fc.read_text(path), flags=flags)
     if n != count:
         raise t.TestFailure(
             "%s: %d matches of %r instead of %d: the tutorial differs from "
             "the one this test was written for" % (path, n, pattern, count))
-    t.write_text(path, text)
+    fc.write_text(path, text)
 
 
 def prepare_stage(stage, end_time, walls_to_us=True):
@@ -212,7 +211,7 @@ def thin_cloud(stage, rows):
     """Keep the lowest rows of constant/cloudPositions (all if rows is 0).
     Returns (kept, of)."""
     path = os.path.join(stage, "constant", "cloudPositions")
-    lines = t.read_text(path).splitlines(keepends=True)
+    lines = fc.read_text(path).splitlines(keepends=True)
     row = re.compile(r"^\(\s*(\S+)\s+(\S+)\s+(\S+)\s*\)\s*$")
     ys = {i: float(m.group(2)) for i, m in
           ((i, row.match(line)) for i, line in enumerate(lines)) if m}
@@ -224,14 +223,14 @@ def thin_cloud(stage, rows):
     top = levels[min(rows, len(levels)) - 1] + 1e-9
     keep = [line for i, line in enumerate(lines)
             if i not in ys or ys[i] <= top]
-    t.write_text(path, "".join(keep))
+    fc.write_text(path, "".join(keep))
     return sum(1 for y in ys.values() if y <= top), len(ys)
 
 
 def read_boundary(stage):
     """{patch name: type} of constant/polyMesh/boundary."""
-    text = t.read_text(os.path.join(stage, "constant", "polyMesh",
-                                    "boundary"))
+    text = fc.read_text(os.path.join(stage, "constant", "polyMesh",
+                                     "boundary"))
     body = text[text.index("}", text.index("FoamFile")) + 1:]
     return {name: kind for name, kind in re.findall(
         r"(\w+)\s*\{\s*type\s+(\w+);", body)}
@@ -262,7 +261,7 @@ def write_settings(stage, name):
 
 def check_log(stage_name, path):
     """A step ended well: "End" in its log, no FOAM FATAL."""
-    text = t.read_text(path)
+    text = fc.read_text(path)
     name = os.path.basename(path)
     t.check("FOAM FATAL" not in text,
             "%s/%s: no FOAM FATAL" % (stage_name, name))
@@ -278,7 +277,7 @@ def check_log(stage_name, path):
 
 def step(stage, args, log):
     """Run one step of the Allrun (exit status checked)."""
-    rc, elapsed = t.run(stage, args, log, timeout=900)
+    rc, elapsed = fc.run(stage, args, log, timeout=900)
     check_log(os.path.basename(stage), os.path.join(stage, log))
     return elapsed
 
@@ -289,7 +288,7 @@ def descendants(root_pid, comm):
     names = {}
     for stat in glob.glob("/proc/[0-9]*/stat"):
         try:
-            text = t.read_text(stat)
+            text = fc.read_text(stat)
         except OSError:
             continue
         pid = int(stat.split("/")[2])
@@ -314,7 +313,7 @@ def mapped_libraries(pid):
     """Shared objects mapped by a process (/proc/<pid>/maps)."""
     libs = set()
     try:
-        for line in t.read_text("/proc/%d/maps" % pid).splitlines():
+        for line in fc.read_text("/proc/%d/maps" % pid).splitlines():
             fields = line.split(None, 5)
             if len(fields) == 6 and ".so" in os.path.basename(fields[5]):
                 libs.add(fields[5].strip())
@@ -327,7 +326,7 @@ def solve(stage, log="log.foamRun", timeout=900):
     """mpirun -np 2 foamRun -parallel, watching the shared objects the
     foamRun processes map while they run.  Returns (seconds, {pid: libs},
     executable of a foamRun process)."""
-    args = t.mpirun(NPROCS, ["foamRun", "-parallel"])
+    args = fc.mpirun(NPROCS, ["foamRun", "-parallel"])
     start = time.time()
     seen = {}
     exe = None
@@ -352,8 +351,8 @@ def solve(stage, log="log.foamRun", timeout=900):
             # The libraries are loaded before the time loop: sample from
             # the first time step on, every 5 s
             if not started:
-                started = "\nTime = " in t.read_text(os.path.join(stage,
-                                                                  log))
+                started = "\nTime = " in fc.read_text(os.path.join(stage,
+                                                                   log))
             if not started or now < next_sample:
                 continue
             next_sample = now + 5
@@ -400,7 +399,7 @@ def check_loaded_libraries(name, seen, exe):
     bad = []
     for binary in [exe] + [wanted["libroughWallInteraction.so"],
                            wanted["liblagrangianParcel.so"]]:
-        for lib, path in t.ldd(binary).items():
+        for lib, path in fc.ldd(binary).items():
             if SYSTEM_OPENFOAM.match(path) or (
                     path == "not found" and not lib.startswith("libmpi")):
                 bad.append("%s: %s => %s" % (os.path.basename(binary), lib,
@@ -431,7 +430,7 @@ def read_list_length(path):
     """Entries of an OpenFOAM list file: its size, checked against the
     number of entries ('(...)' rows of positions, numbers or '(...)' of
     fields; uniform lists N{value} too)."""
-    text = t.read_text(path)
+    text = fc.read_text(path)
     body = text[text.index("}", text.index("FoamFile")) + 1:]
     body = re.sub(r"//.*", "", re.sub(r"/\*.*?\*/", "", body, flags=re.S))
     m = re.search(r"(\d+)\s*(\(|\{)", body)
@@ -462,7 +461,7 @@ def parcels(stage, time_name):
             counts.append(0)
             continue
         n = read_list_length(os.path.join(cloud, "positions"))
-        part = {name: np.atleast_1d(t.read_field(os.path.join(cloud, name)))
+        part = {name: np.atleast_1d(fc.read_field(os.path.join(cloud, name)))
                 for name in ("d", "nParticle")}
         for name, values in part.items():
             if len(values) != n:
@@ -492,12 +491,12 @@ def reconstructed_count(stage, time_name):
 def positions_in_file(path):
     """Entries of a vectorField file (manualInjection's positionsFile)."""
     return len(re.findall(r"^\s*\(\s*\S+\s+\S+\s+\S+\s*\)\s*$",
-                          t.read_text(path), flags=re.M))
+                          fc.read_text(path), flags=re.M))
 
 
 def last_statistics(stage):
     """The last row of roughWallInteraction.dat and its column names."""
-    names, rows = t.read_statistics(stage, CLOUD)
+    names, rows = fc.read_statistics(stage, CLOUD)
     t.check(len(rows) > 0, "%s: statistics file has %d rows"
             % (os.path.basename(stage), len(rows)))
     return names, rows[-1]
@@ -512,18 +511,18 @@ def escapes(names, row):
 
 
 def check_rough_statistics(name, row, wall="walls"):
-    hits = t.column(row, wall + "_hits")
+    hits = fc.column(row, wall + "_hits")
     t.check(hits > 0, "%s: the rough walls were hit: %s_hits = %d"
             % (name, wall, hits))
-    per_hit = t.column(row, wall + "_facetPerHit")
-    loss = t.column(row, wall + "_energyLoss")
-    fallbacks = t.column(row, wall + "_fallbacks")
+    per_hit = fc.column(row, wall + "_facetPerHit")
+    loss = fc.column(row, wall + "_energyLoss")
+    fallbacks = fc.column(row, wall + "_fallbacks")
     t.check(per_hit >= 1 and math.isfinite(loss) and loss >= 0
             and 0 <= fallbacks <= hits,
             "%s: %s: %.4g facet collisions per hit, %d hits at the bound, "
             "mean k_n %.4g, k_t %.4g, energy loss %.4g J (finite, >= 0)"
-            % (name, wall, per_hit, fallbacks, t.column(row, wall + "_meanKn"),
-               t.column(row, wall + "_meanKt"), loss))
+            % (name, wall, per_hit, fallbacks, fc.column(row, wall + "_meanKn"),
+               fc.column(row, wall + "_meanKt"), loss))
     return hits
 
 
@@ -531,8 +530,8 @@ def log_reports(path):
     """(final 'Current number of parcels', final escapes of the 'Parcel
     fate' lines, final 'number of parcels added' per injector, sum of the
     'Added N new parcels' lines)."""
-    text = t.read_text(path)
-    steps = t.read_steps(path)
+    text = fc.read_text(path)
+    steps = fc.read_steps(path)
     added = [int(n) for n in re.findall(
         r"number of parcels added\s*=\s*(\d+)", text)]
     new = sum(int(n) for n in re.findall(r"Added (\d+) new parcels", text))
@@ -560,13 +559,13 @@ def run_control(root, source, end_time, rows, hits):
     last = os.path.join(case, end_time, "lagrangian", CLOUD, "positions")
     in_domain = read_list_length(last) if os.path.exists(last) else 0
     _, row = last_statistics(case)
-    control_hits = int(t.column(row, "walls_hits"))
+    control_hits = int(fc.column(row, "walls_hits"))
     t.check(in_domain == injected and control_hits == 0
-            and t.column(row, "frontAndBack_hits") == 0,
+            and fc.column(row, "frontAndBack_hits") == 0,
             "%s: with the tutorial's wall-type walls (wall model on them) "
             "our model sees walls_hits = %d (the test: %d) and "
             "frontAndBack_hits = %d; %d parcels of %d in the domain at t = %s"
-            % (name, control_hits, hits, t.column(row, "frontAndBack_hits"),
+            % (name, control_hits, hits, fc.column(row, "frontAndBack_hits"),
                in_domain, injected, end_time))
     return elapsed, control_hits
 
@@ -631,7 +630,7 @@ def test():
                reconstructed_count(initial, last), in_domain))
     hits1 = check_rough_statistics(name, row)
     print("info  %s: frontAndBack_hits = %d (the wall model's wall)"
-          % (name, t.column(row, "frontAndBack_hits")))
+          % (name, fc.column(row, "frontAndBack_hits")))
 
     # -- hopperEmptying ----------------------------------------------------
     name = "hopperEmptying"
@@ -641,10 +640,10 @@ def test():
     times["blockMesh+decomposePar 2"] += step(emptying, ["decomposePar"],
                                               "log.decomposePar")
     times["mapFieldsPar"] = step(
-        emptying, t.mpirun(NPROCS, ["mapFieldsPar", "../hopperInitialState",
-                                    "-sourceTime", "latestTime",
-                                    "-parallel"]), "log.mapFieldsPar")
-    text = t.read_text(os.path.join(emptying, "log.mapFieldsPar"))
+        emptying, fc.mpirun(NPROCS, ["mapFieldsPar", "../hopperInitialState",
+                                     "-sourceTime", "latestTime",
+                                     "-parallel"]), "log.mapFieldsPar")
+    text = fc.read_text(os.path.join(emptying, "log.mapFieldsPar"))
     read = re.findall(r"read (\d+) parcels from source mesh", text)
     mapped = re.findall(r"mapped (\d+) parcels to the target mesh", text)
     t.check(read == [str(in_domain)] and mapped == [str(in_domain)],
@@ -670,10 +669,10 @@ def test():
     in_domain2 = sum(counts)
     names, row = last_statistics(emptying)
     escaped2, escaped_mass = escapes(names, row)
-    outlet = int(t.column(row, "outlet_nEscape"))
+    outlet = int(fc.column(row, "outlet_nEscape"))
     t.check(outlet > 0, "%s: parcels left through the outlet: "
             "outlet_nEscape = %d (inlet_nEscape = %d)"
-            % (name, outlet, t.column(row, "inlet_nEscape")))
+            % (name, outlet, fc.column(row, "inlet_nEscape")))
     t.check(start_parcels == in_domain2 + escaped2,
             "%s: parcels conserved: mapped %d = in the domain at t = %s %d "
             "(processors %s) + escaped %d" % (name, start_parcels, last,
@@ -694,7 +693,7 @@ def test():
                reconstructed_count(emptying, last)))
     hits2 = check_rough_statistics(name, row)
     print("info  %s: frontAndBack_hits = %d (the wall model's wall)"
-          % (name, t.column(row, "frontAndBack_hits")))
+          % (name, fc.column(row, "frontAndBack_hits")))
 
     control = None
     if args.control:

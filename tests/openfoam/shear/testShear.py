@@ -82,15 +82,14 @@ import argparse
 import math
 import os
 import re
-import sys
 
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(os.path.dirname(HERE), "spin"))
 
-import spinCase as s  # noqa: E402
-from spinCase import t  # noqa: E402
+import spinCase as s
+from spinCase import t
+import foamcase as fc
 
 #: Shear rate [1/s] of U = (G y, 0, 0)
 G = 1000.0
@@ -289,16 +288,16 @@ boundary
 
 def edit(path, pattern, replacement, count=1):
     """Replace pattern in a file, exactly count times."""
-    text, n = re.subn(pattern, replacement, t.read_text(path), flags=re.M)
+    text, n = re.subn(pattern, replacement, fc.read_text(path), flags=re.M)
     if n != count:
         raise t.TestFailure("%s: %r found %d times, expected %d"
                             % (path, pattern, n, count))
-    t.write_text(path, text)
+    fc.write_text(path, text)
 
 
 def patch_faces(poly_mesh):
     """{patch: (startFace, nFaces)} of a polyMesh boundary file."""
-    body = t._body(t.read_text(os.path.join(poly_mesh, "boundary")))
+    body = fc.strip_header(fc.read_text(os.path.join(poly_mesh, "boundary")))
     return {m.group(1): (int(m.group(3)), int(m.group(2))) for m in re.finditer(
         r"(\w+)\s*\{[^}]*?nFaces\s+(\d+);[^}]*?startFace\s+(\d+);", body)}
 
@@ -306,7 +305,7 @@ def patch_faces(poly_mesh):
 def write_shear_carrier(case):
     """0/U = (G y, 0, 0) at the cell centres and at the boundary faces."""
     poly = case.file("constant/polyMesh")
-    mesh = t.MeshGeometry(poly)
+    mesh = fc.MeshGeometry(poly)
 
     def vectors(points):
         rows = "\n".join(s.foam_vector(fluid_velocity(p)) for p in points)
@@ -320,10 +319,10 @@ def write_shear_carrier(case):
                        "        value           %s;\n    }\n"
                        % (name, vectors(centres)))
     t.check(len(patches) == 1, "one boundary patch (%d)" % len(patches))
-    t.write_text(case.file("0/U"), t.foam_header("volVectorField", "U", "0")
-                 + "dimensions      [0 1 -1 0 0 0 0];\n\ninternalField   %s;"
+    fc.write_text(case.file("0/U"), fc.foam_header("volVectorField", "U", "0")
+                  + "dimensions      [0 1 -1 0 0 0 0];\n\ninternalField   %s;"
                    "\n\nboundaryField\n{\n%s}\n"
-                 % (vectors(mesh.cell_centres), "".join(patches)))
+                  % (vectors(mesh.cell_centres), "".join(patches)))
 
 
 def forces_entry(model):
@@ -349,9 +348,9 @@ def shear_case(platform, path, model):
                for d, x, slip, _ in PARCELS]
     case = s.spin_case(platform, path, parcels, forces=forces_entry(model),
                        functions=functions_entry(model), deltaT=DT)
-    t.write_text(case.file("system/blockMeshDict"),
-                 t.foam_header("dictionary", "blockMeshDict", "system")
-                 + BLOCK_MESH)
+    fc.write_text(case.file("system/blockMeshDict"),
+                  fc.foam_header("dictionary", "blockMeshDict", "system")
+                  + BLOCK_MESH)
     properties = case.cloud_properties()
     edit(properties, r"^(\s*rho0\s+)[^;]*;", r"\g<1>%r;" % RHO_P)
     # cellPoint: exact for the linear carrier (cell would give the cell
@@ -533,7 +532,7 @@ def test():
     p.add_argument("--check", required=True,
                    choices=("lift", "torque", "saffmanMei"))
     args = p.parse_args()
-    platform = t.Platform(args.platform)
+    platform = fc.Platform(args.platform)
     if args.check == "lift":
         for coefficient in ("OesterleBuiDinh", "RubinowKeller"):
             run_model(args, platform, Model(lift=coefficient),

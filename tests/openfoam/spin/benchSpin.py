@@ -18,7 +18,7 @@ parcel-step over "none".
 
 Usage (in one platform's environment):
   etc/openfoamEnv openfoam13 python3 tests/openfoam/spin/benchSpin.py \\
-      --platform openfoam13 --work /tmp/benchSpin --output spin-cost.csv
+      --platform openfoam13 --work build/benchSpin --output spin-cost.csv
 
 SPDX-License-Identifier: GPL-3.0-or-later
 """
@@ -32,6 +32,7 @@ import numpy as np
 
 import spinCase as s
 from spinCase import t
+import foamcase as fc
 
 VARIANTS = {
     "none": ("sphereDrag;", ""),
@@ -64,7 +65,7 @@ def main():
     p.add_argument("--repeats", type=int, default=3)
     p.add_argument("--output", default="spin-cost.csv")
     args = p.parse_args()
-    platform = t.Platform(args.platform)
+    platform = fc.Platform(args.platform)
     t.check_environment(platform)
 
     rng = np.random.default_rng(1)
@@ -75,8 +76,8 @@ def main():
     for variant, (forces, functions) in VARIANTS.items():
         case = s.spin_case(platform, os.path.join(args.work, variant), [],
                            forces=forces, functions=functions, deltaT=1e-3)
-        case.write_injectors([t.Injector("cloud", positions, (0, 0, 0),
-                                         200e-6)])
+        case.write_injectors([fc.Injector("cloud", positions, (0, 0, 0),
+                                          200e-6)])
         s.mesh(case, 1, lambda c: s.rotating_carrier(c, 5.0))
         case.set_control(endTime=repr(args.steps * 1e-3),
                          startFrom="startTime", writeControl="runTime",

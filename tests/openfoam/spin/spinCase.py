@@ -29,14 +29,13 @@ numpy only.  SPDX-License-Identifier: GPL-3.0-or-later
 import math
 import os
 import re
-import sys
 
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.dirname(HERE))
 
-import foamTestCase as t  # noqa: E402
+import foamTestCase as t
+import foamcase as fc
 
 #: The case template
 TEMPLATE = os.path.join(HERE, "case")
@@ -74,12 +73,12 @@ def spin_case(platform, path, parcels, forces="", functions="",
     """A case with one manualInjection per parcel (dict(d, position, U0));
     forces: the particleForces entries; functions: the cloudFunctions
     entries."""
-    case = t.FoamCase(platform, TEMPLATE, path, kind)
-    case.write_injectors([t.Injector("p%d" % i, [p["position"]],
-                                     p.get("U0", (0, 0, 0)), p["d"])
+    case = fc.FoamCase(platform, TEMPLATE, path, kind)
+    case.write_injectors([fc.Injector("p%d" % i, [p["position"]],
+                                      p.get("U0", (0, 0, 0)), p["d"])
                           for i, p in enumerate(parcels)])
-    t.write_text(case.file("constant/spinForces"), forces + "\n")
-    t.write_text(case.file("constant/spinFunctions"), functions + "\n")
+    fc.write_text(case.file("constant/spinForces"), forces + "\n")
+    fc.write_text(case.file("constant/spinFunctions"), functions + "\n")
     case.set_control(deltaT=repr(deltaT), endTime=repr(deltaT))
     return case
 
@@ -97,7 +96,7 @@ def write_carrier(case, internal, boundary="zeroGradient"):
             % (len(internal), rows)
         value = ""
         boundary = "zeroGradient"
-    t.write_text(case.file("0/U"), t.foam_header("volVectorField", "U", "0")
+    fc.write_text(case.file("0/U"), fc.foam_header("volVectorField", "U", "0")
                  + """dimensions      [0 1 -1 0 0 0 0];
 
 %s
@@ -115,7 +114,7 @@ boundaryField
 def rotating_carrier(case, omega_f):
     """Solid-body rotation omega_f about z through CENTRE (needs the mesh):
     U = omega_f z x (x - CENTRE), 0.5 curl U = omega_f z."""
-    mesh = t.MeshGeometry(case.file("constant/polyMesh"))
+    mesh = fc.MeshGeometry(case.file("constant/polyMesh"))
     r = mesh.cell_centres - CENTRE
     U = omega_f * np.column_stack([-r[:, 1], r[:, 0], np.zeros(len(r))])
     write_carrier(case, U)
@@ -136,7 +135,7 @@ def mesh(case, nprocs, before_decompose=None):
 def time_dirs(case):
     """The time folders of the case (of processor0 when decomposed), as
     (value, name), sorted."""
-    root = t.processor_roots(case.path)[0]
+    root = fc.processor_roots(case.path)[0]
     times = []
     for name in os.listdir(root):
         try:
@@ -154,12 +153,12 @@ def set_spins(case, time_name, spin_of_d):
         path = os.path.join(d_dir, "angularMomentum")
         if not os.path.exists(path):
             continue
-        d = np.atleast_1d(t.read_field(os.path.join(d_dir, "d")))
-        text = t.read_text(path)
+        d = np.atleast_1d(fc.read_field(os.path.join(d_dir, "d")))
+        text = fc.read_text(path)
         head = text[:text.index("}", text.index("FoamFile")) + 1]
         rows = "\n".join(foam_vector(inertia(di) * np.asarray(spin_of_d(di)))
                          for di in d)
-        t.write_text(path, head + "\n\n%d\n(\n%s\n)\n" % (len(d), rows))
+        fc.write_text(path, head + "\n\n%d\n(\n%s\n)\n" % (len(d), rows))
         count += len(d)
     return count
 
@@ -194,7 +193,7 @@ def check_processors(case, time_name, what):
     counts = []
     for d_dir in case.cloud_dirs(time_name):
         path = os.path.join(d_dir, "d")
-        counts.append(len(np.atleast_1d(t.read_field(path)))
+        counts.append(len(np.atleast_1d(fc.read_field(path)))
                       if os.path.exists(path) else 0)
     t.check(len(counts) == case.nprocs and min(counts) > 0,
             "%s: parcels on every processor at t = %s (%s)"

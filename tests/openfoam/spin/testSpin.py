@@ -42,6 +42,7 @@ import numpy as np
 
 import spinCase as s
 from spinCase import t
+import foamcase as fc
 
 #: Lift parcels: diameter [m], position (cell centres, both sides of x = 0),
 #: spin [rad/s]
@@ -253,7 +254,7 @@ def torque_rotating_fluid(args, platform):
 
 def test():
     args = parse_args()
-    platform = t.Platform(args.platform)
+    platform = fc.Platform(args.platform)
     if args.model == "lift":
         coefficients = args.coefficients.split(",") if args.coefficients \
             else (["OesterleBuiDinh", "RubinowKeller"] if args.np == 1

@@ -26,6 +26,7 @@ import re
 
 import spinCase as s
 from spinCase import t
+import foamcase as fc
 
 #: Signs of a crash instead of a clean fatal error (a stack trace)
 CRASH_SIGNS = ["sigSegv", "sigFpe", "Segmentation fault", "core dumped",
@@ -70,8 +71,8 @@ def run(args, platform, name, body, kind="colliding", with_libs=True):
     s.write_carrier(case, "uniform (1 0 0)", "fixedValue")
     if not with_libs:
         path = case.file("system/controlDict")
-        t.write_text(path, "\n".join(
-            line for line in t.read_text(path).splitlines()
+        fc.write_text(path, "\n".join(
+            line for line in fc.read_text(path).splitlines()
             if not line.startswith("libs")) + "\n")
     case.run(["blockMesh"], "log.blockMesh")
     rc, _ = case.solve("log.solver", check_rc=False)
@@ -99,7 +100,7 @@ def check_fatal(platform, model, name, rc, out, expected):
 
 def test():
     args = parse_args()
-    platform = t.Platform(args.platform)
+    platform = fc.Platform(args.platform)
     model, _, coefficients = MODELS[args.model]
 
     # Controls: each coefficient runs and is named in the log

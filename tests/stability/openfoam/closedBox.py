@@ -30,13 +30,11 @@ SPDX-License-Identifier: GPL-3.0-or-later
 import argparse
 import os
 import statistics
-import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "..", "openfoam"))
-import foamTestCase as t  # noqa: E402
+import foamTestCase as t
+import foamcase as fc
 
 BOX = t.BOX
 G = 9.81
@@ -69,7 +67,7 @@ def test():
          "U0": (-1.0, -1.0, -2.0), "box": inner},
     ]
     case, parcels, mass = t.closed_box_case(
-        t.Platform(args.platform), os.path.join(args.work, "case"), groups)
+        fc.Platform(args.platform), os.path.join(args.work, "case"), groups)
     case.set_entry("constant/roughWallSettings", "roughnessAngle",
                    "%g" % args.Delta)
     case.set_control(endTime="%g" % args.end_time,

@@ -29,13 +29,11 @@ SPDX-License-Identifier: GPL-3.0-or-later
 import argparse
 import math
 import os
-import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "..", "openfoam"))
-import foamTestCase as t  # noqa: E402
+import foamTestCase as t
+import foamcase as fc
 
 BOX = t.BOX
 
@@ -61,7 +59,7 @@ def setup(path, args, smooth):
         {"name": "resting", "n": n, "d": 500e-6, "U0": (0.0, 0.0, 0.0),
          "box": ((0.01, 1e-5, 0.01), (0.09, 5e-5, 0.09))},
     ]
-    case, parcels, mass = t.closed_box_case(t.Platform(args.platform), path,
+    case, parcels, mass = t.closed_box_case(fc.Platform(args.platform), path,
                                             groups)
     if smooth:
         case.write_settings(t.SMOOTH_SETTINGS)

@@ -32,13 +32,11 @@ SPDX-License-Identifier: GPL-3.0-or-later
 
 import argparse
 import os
-import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "..", "openfoam"))
-import foamTestCase as t  # noqa: E402
+import foamTestCase as t
+import foamcase as fc
 
 BOX = t.BOX
 GAS = (3.0, -2.0, 1.0)
@@ -63,7 +61,7 @@ def setup(path, args, smooth):
         {"name": "huge", "n": args.parcels_per_group, "d": 5e-3,
          "U0": LAUNCH, "box": inner},
     ]
-    case, parcels, mass = t.closed_box_case(t.Platform(args.platform), path,
+    case, parcels, mass = t.closed_box_case(fc.Platform(args.platform), path,
                                             groups)
     case.set_entry("0/U", "internalField", "uniform (%g %g %g)" % GAS)
     case.set_integration(args.integration)

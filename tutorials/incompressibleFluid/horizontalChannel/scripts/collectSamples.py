@@ -20,6 +20,7 @@ import sys
 
 import numpy as np
 
+import foamcase as fc
 import tutorialCommon as tc
 
 
@@ -43,15 +44,15 @@ def read_snapshot(case, time, mesh):
     if not os.path.exists(os.path.join(cloud, "positions")):
         return (np.zeros(0), np.zeros((0, 2)), np.zeros(0),
                 np.zeros(0, np.int64))
-    pos = tc.read_positions(os.path.join(cloud, "positions"), mesh)
-    U = tc.read_field(os.path.join(cloud, "U")).reshape(-1, 3)
-    d = tc.read_field(os.path.join(cloud, "d")).reshape(-1)
-    rho = tc.read_field(os.path.join(cloud, "rho")).reshape(-1)
+    pos = fc.read_positions(os.path.join(cloud, "positions"), mesh)[0]
+    U = fc.read_field(os.path.join(cloud, "U")).reshape(-1, 3)
+    d = fc.read_field(os.path.join(cloud, "d")).reshape(-1)
+    rho = fc.read_field(os.path.join(cloud, "rho")).reshape(-1)
     # Spin: angular momentum / moment of inertia (0.1 m d^2, a sphere)
     inertia = 0.1*rho*np.pi/6*d**5
-    L = tc.read_field(os.path.join(cloud, "angularMomentum")).reshape(-1, 3)
-    orig_id = tc.read_field(os.path.join(cloud, "origId")).astype(np.int64)
-    orig_proc = tc.read_field(os.path.join(cloud, "origProcId")) \
+    L = fc.read_field(os.path.join(cloud, "angularMomentum")).reshape(-1, 3)
+    orig_id = fc.read_field(os.path.join(cloud, "origId")).astype(np.int64)
+    orig_proc = fc.read_field(os.path.join(cloud, "origProcId")) \
         .astype(np.int64)
     if not len(pos) == len(U) == len(d) == len(L) == len(orig_id):
         raise ValueError("%s: fields of different lengths" % cloud)
@@ -63,7 +64,7 @@ def read_snapshot(case, time, mesh):
 
 def wall_face_area(case, mesh):
     """Area of one wall face: period length x slab thickness / faces."""
-    text = tc.ftc.read_text(os.path.join(case, "constant", "polyMesh",
+    text = fc.read_text(os.path.join(case, "constant", "polyMesh",
                                          "boundary"))
     m = re.search(r"lowerWall\s*\{[^}]*nFaces\s+(\d+);", text)
     size = mesh.hi - mesh.lo
@@ -76,7 +77,7 @@ def wall_impacts(case, time, area):
     path = os.path.join(case, time, tc.CLOUD + ":numberCollisionDensity")
     if not os.path.exists(path):
         return [np.nan, np.nan]
-    return [tc.patch_values(path, wall).sum()*area for wall in tc.WALLS]
+    return [fc.patch_values(path, wall).sum()*area for wall in tc.WALLS]
 
 
 def prune(case, keep):
@@ -91,7 +92,7 @@ def main():
     times = time_dirs(case)
     if not times:
         raise SystemExit("%s: no write times" % case)
-    mesh = tc.Mesh(case)
+    mesh = tc.read_mesh(case)
     area = wall_face_area(case, mesh)
 
     t, counts, y, ux, uy, wz, ids, impacts = [], [], [], [], [], [], [], []

@@ -13,12 +13,13 @@ import sys
 
 import numpy as np
 
+import foamcase as fc
 import tutorialCommon as tc
 
 
 def main():
     case, n, seed = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
-    mesh = tc.Mesh(case)
+    mesh = tc.read_mesh(case)
     lo, hi = mesh.lo, mesh.hi
     rng = np.random.default_rng(seed)
     # Keep clear of the walls and the periodic faces by a tiny margin
@@ -26,7 +27,7 @@ def main():
     x = rng.uniform(lo[0] + margin[0], hi[0] - margin[0], n)
     y = rng.uniform(lo[1] + margin[1], hi[1] - margin[1], n)
     z = np.full(n, 0.5*(lo[2] + hi[2]))
-    tc.ftc.write_vectors(os.path.join(case, "constant", "cloudPositions"),
+    fc.write_vectors(os.path.join(case, "constant", "cloudPositions"),
                          "cloudPositions", np.column_stack((x, y, z)))
 
 

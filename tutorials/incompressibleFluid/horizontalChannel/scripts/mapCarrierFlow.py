@@ -32,6 +32,7 @@ import sys
 
 import numpy as np
 
+import foamcase as fc
 import tutorialCommon as tc
 
 FIELDS = ("U", "k", "omega", "nut")
@@ -44,7 +45,7 @@ def carrier_profile(carrier, time, name, mesh):
     constant from the first cell: they are used at y >= r only, beyond the
     first cell centre, see main)."""
     y = mesh.cell_centres[:, 1]
-    v = tc.internal_field(os.path.join(carrier, time, name))
+    v = fc.internal_field(os.path.join(carrier, time, name))
     v = v[:, 0] if v.ndim == 2 else v          # U: streamwise component
     rows, inv = np.unique(np.round(y, 12), return_inverse=True)
     values = np.bincount(inv, weights=v)/np.bincount(inv)
@@ -59,7 +60,7 @@ def write_field(case, name, values, walls, diameter):
     """The case's 0/<name> with the mapped internal field and one entry per
     wall."""
     path = os.path.join(case, "0", name)
-    text = tc.ftc.read_text(path)
+    text = fc.read_text(path)
     vector = name == "U"
 
     def fmt(v):
@@ -94,8 +95,8 @@ def main():
     carrier, time, case = sys.argv[1], sys.argv[2], sys.argv[3]
     diameter = float(sys.argv[4])
     r = 0.5*diameter
-    cmesh = tc.Mesh(carrier)
-    tmesh = tc.Mesh(case)
+    cmesh = tc.read_mesh(carrier)
+    tmesh = tc.read_mesh(case)
     height = cmesh.hi[1] - cmesh.lo[1]
     theight = tmesh.hi[1] - tmesh.lo[1]
     if abs(theight - (height - diameter)) > 1e-9*height:

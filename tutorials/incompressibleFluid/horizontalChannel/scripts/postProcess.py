@@ -34,11 +34,12 @@ import sys
 
 import numpy as np
 
+import foamcase as fc
 import tutorialCommon as tc
 
 import matplotlib
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.pyplot as plt
 
 N_BINS = 25
 N_GROUPS = 20
@@ -55,8 +56,8 @@ def read_model_statistics(case):
     """Rows of roughWallInteraction.dat (cumulative totals) as a dict of
     arrays, or None (a variant without the rough-wall model)."""
     try:
-        names, rows = tc.read_statistics(case, tc.CLOUD)
-    except tc.ftc.TestFailure:
+        names, rows = fc.read_statistics(case, tc.CLOUD)
+    except fc.FoamError:
         return None
     return {n: np.array([r[n] for r in rows]) for n in names}
 
@@ -403,12 +404,12 @@ def carrier_profile(info):
     """(y/H, U) of the air, from the carrier run."""
     try:
         carrier, time = info["carrier"], "%d" % info["carrierTime"]
-        mesh = tc.Mesh(carrier)
+        mesh = tc.read_mesh(carrier)
         y = mesh.cell_centres[:, 1] - mesh.lo[1]
-        U = tc.internal_field(os.path.join(carrier, time, "U"))[:, 0]
+        U = fc.internal_field(os.path.join(carrier, time, "U"))[:, 0]
         order = np.argsort(y)
         return y[order]/info["height"], U[order]
-    except (KeyError, OSError, ValueError):
+    except (KeyError, OSError, ValueError, fc.FoamError):
         return None
 
 
@@ -419,20 +420,20 @@ def carrier_statistics(info):
     meanVelocityForce's last report), y+ of the first cell centre, air
     velocity at one bead radius from the wall."""
     carrier, time = info["carrier"], "%d" % info["carrierTime"]
-    mesh = tc.Mesh(carrier)
+    mesh = tc.read_mesh(carrier)
     y = mesh.cell_centres[:, 1] - mesh.lo[1]
-    U = tc.internal_field(os.path.join(carrier, time, "U"))[:, 0]
+    U = fc.internal_field(os.path.join(carrier, time, "U"))[:, 0]
     rows, inv = np.unique(np.round(y, 12), return_inverse=True)
     u = np.bincount(inv, weights=U)/np.bincount(inv)
     H = mesh.hi[1] - mesh.lo[1]
-    props = tc.ftc.read_text(os.path.join(carrier, "constant",
+    props = fc.read_text(os.path.join(carrier, "constant",
                                           "physicalProperties"))
     nu = float(re.search(r"^nu\s+([^;]+);", props, re.M).group(1))
     lower = rows < 0.5*H
     u_tau = np.sqrt(nu*u[0]/rows[0])
     heights = np.diff(np.r_[0, 0.5*(rows[1:] + rows[:-1]), H])
-    log = tc.ftc.read_text(os.path.join(carrier, "log.foamRun"))
-    grad = re.findall(r"pressure gradient = (%s)" % tc.ftc.NUMBER, log)
+    log = fc.read_text(os.path.join(carrier, "log.foamRun"))
+    grad = re.findall(r"pressure gradient = (%s)" % fc.NUMBER, log)
     r = 0.5*info["diameter"]
     return {
         "uTau": u_tau, "ReTau": u_tau*0.5*H/nu, "Ucentreline": u.max(),

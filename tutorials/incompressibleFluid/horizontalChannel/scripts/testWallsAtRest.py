@@ -42,9 +42,9 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TUTORIAL = os.path.dirname(HERE)
-sys.path.insert(0, HERE)
 
-import tutorialCommon as tc  # noqa: E402
+import foamcase as fc
+import tutorialCommon as tc
 
 VARIANT = "rough5.noSpinForces"
 PARCELS = 400
@@ -119,7 +119,7 @@ def wall_speeds(log):
     """The model's report: patch -> largest wall speed [m/s]."""
     speeds = {}
     for m in re.finditer(r"Wall velocity \(patchData\) of patch (\w+): "
-                         r"largest speed (%s) m/s" % tc.ftc.NUMBER, log):
+                         r"largest speed (%s) m/s" % fc.NUMBER, log):
         speeds[m.group(1)] = max(speeds.get(m.group(1), 0.0),
                                  float(m.group(2)))
     return speeds
@@ -128,19 +128,19 @@ def wall_speeds(log):
 def energies(case):
     """Per write time: parcel id -> 1/2 m |u|^2 + 1/2 I |omega|^2 [J]."""
     times = sorted((float(t), t) for t in os.listdir(case)
-                   if re.fullmatch(tc.ftc.NUMBER, t) and float(t) > 0)
+                   if re.fullmatch(fc.NUMBER, t) and float(t) > 0)
     result = []
     for _, t in times:
         cloud = os.path.join(case, t, "lagrangian", tc.CLOUD)
         if not os.path.exists(os.path.join(cloud, "U")):
             result.append({})
             continue
-        U = tc.read_field(os.path.join(cloud, "U")).reshape(-1, 3)
-        d = tc.read_field(os.path.join(cloud, "d")).reshape(-1)
-        rho = tc.read_field(os.path.join(cloud, "rho")).reshape(-1)
-        L = tc.read_field(os.path.join(cloud, "angularMomentum")) \
+        U = fc.read_field(os.path.join(cloud, "U")).reshape(-1, 3)
+        d = fc.read_field(os.path.join(cloud, "d")).reshape(-1)
+        rho = fc.read_field(os.path.join(cloud, "rho")).reshape(-1)
+        L = fc.read_field(os.path.join(cloud, "angularMomentum")) \
             .reshape(-1, 3)
-        ids = tc.read_field(os.path.join(cloud, "origId")).astype(int)
+        ids = fc.read_field(os.path.join(cloud, "origId")).astype(int)
         m = rho*np.pi/6*d**3
         inertia = 0.1*m*d**2
         e = 0.5*m*np.sum(U**2, axis=1) + 0.5*np.sum(L**2, axis=1)/inertia
@@ -167,7 +167,7 @@ def run(work, fixed_walls):
     with open(os.path.join(case, "log.foamRun"), "w") as log:
         subprocess.run(["foamRun"], cwd=case, stdout=log,
                        stderr=subprocess.STDOUT, check=True)
-    log = tc.ftc.read_text(os.path.join(case, "log.foamRun"))
+    log = fc.read_text(os.path.join(case, "log.foamRun"))
     if "\nEnd" not in log:
         fail("foamRun did not finish, see " + case)
     # OpenFOAM-13 writes the cloud of the previous step: none at the first

@@ -26,9 +26,8 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TUTORIAL = os.path.dirname(HERE)
-sys.path.insert(0, HERE)
 
-import checkResults  # noqa: E402  (the smoke test's criteria)
+import checkResults  # the smoke test's criteria
 
 BEGIN = "<!-- begin generated: %s -->"
 END = "<!-- end generated: %s -->"

@@ -1,0 +1,55 @@
+"""foamcase: set up, run and read the OpenFOAM cases of roughWallInteraction.
+
+One package for the tests (tests/openfoam, tests/stability/openfoam), the
+benchmarks (benchmarks/scripts) and the tutorial's scripts
+(tutorials/incompressibleFluid/horizontalChannel/scripts), on the three
+platforms (OpenFOAM-13 and -14, openfoam.org; v1912, ESI):
+
+  platforms   what differs between the platforms (solvers, cloud names),
+              where the loader finds the library
+  dictionaries  reading and writing dictionary files
+  fields      field and list files (lagrangian fields, internal fields,
+              values on a patch)
+  mesh        the geometry of a polyMesh (barycentric parcel coordinates
+              to positions)
+  lagrangian  parcels: fields, positions, processor folders
+  logs        the solver log's cloud reports, the model's statistics file
+  running     running an OpenFOAM command (serial, mpirun)
+  cases       a case made from a template for one platform and cloud kind
+
+Callers find it through PYTHONPATH=<checkout>/src/python (ctest, the
+tutorial's Allrun and benchmarks/run set it). Debian's python3 with numpy.
+Errors are FoamError (test assertions live in the tests).
+
+SPDX-License-Identifier: GPL-3.0-or-later
+"""
+
+from .errors import FoamError, CommandFailed
+from .platforms import (PLATFORMS, SPIN, LIBRARY, Platform, find_library,
+                        library_search_path, ldd, environment_library)
+from .dictionaries import (NUMBER, read_text, write_text, strip_header,
+                           foam_header, write_vectors, dict_entry, set_entry)
+from .fields import read_field, internal_field, patch_values
+from .mesh import MeshGeometry
+from .lagrangian import (processor_roots, cloud_dirs, read_cloud,
+                         read_positions, cloud_parts)
+from .logs import (statistics_path, read_statistics, column, read_steps,
+                   system_escapes, parcel_counts, final_parcels)
+from .running import run, mpirun
+from .cases import Injector, FoamCase
+
+__all__ = [
+    "FoamError", "CommandFailed",
+    "PLATFORMS", "SPIN", "LIBRARY", "Platform", "find_library",
+    "library_search_path", "ldd", "environment_library",
+    "NUMBER", "read_text", "write_text", "strip_header", "foam_header",
+    "write_vectors", "dict_entry", "set_entry",
+    "read_field", "internal_field", "patch_values",
+    "MeshGeometry",
+    "processor_roots", "cloud_dirs", "read_cloud", "read_positions",
+    "cloud_parts",
+    "statistics_path", "read_statistics", "column", "read_steps",
+    "system_escapes", "parcel_counts", "final_parcels",
+    "run", "mpirun",
+    "Injector", "FoamCase",
+]

@@ -1,0 +1,140 @@
+"""The platforms: what differs between OpenFOAM-13/-14 (openfoam.org) and
+v1912 (ESI), in one place, and where the dynamic loader finds a library.
+
+  openfoam13    OpenFOAM-13 (Foundation), and openfoam14, OpenFOAM-14, the
+                same: `foamRun` with `solver functions;
+                subSolver incompressibleFluid;` (frozen carrier) and the
+                `clouds` fvModel function object; constant/cloudProperties
+                with `type cloud;` (kinematic, no spin), `collidingCloud;`
+                (spin) or `MPPICCloud;`; cloud name "cloud".
+  openfoam1912  OpenFOAM v1912 (ESI, Debian's package): the solvers
+                icoUncoupledKinematicParcelFoam (colliding cloud, spin),
+                uncoupledKinematicParcelFoam (kinematic cloud), DPMFoam
+                (colliding cloud, carrier solved) and MPPICFoam (MPPIC cloud,
+                carrier solved); constant/kinematicCloudProperties; cloud name
+                "kinematicCloud".
+
+SPDX-License-Identifier: GPL-3.0-or-later
+"""
+
+import os
+import re
+import subprocess
+
+from .errors import FoamError
+
+#: The platforms, first the project's first platform
+PLATFORMS = ("openfoam13", "openfoam14", "openfoam1912")
+
+#: Cloud kinds: does the parcel carry spin (angularMomentum)?
+SPIN = {"colliding": True, "kinematic": False, "DPM": True, "MPPIC": False}
+
+
+class Platform:
+    """What differs between the platforms, in one place."""
+
+    def __init__(self, name):
+        if name not in PLATFORMS:
+            raise ValueError("unknown platform %r (%s)"
+                             % (name, " or ".join(PLATFORMS)))
+        self.name = name
+        self.foundation = name in ("openfoam13", "openfoam14")
+        #: $WM_PROJECT_VERSION of the platform's environment
+        self.version = name[len("openfoam"):] if self.foundation else "v1912"
+        #: Name of the (only) cloud, its properties file
+        self.cloud = "cloud" if self.foundation else "kinematicCloud"
+        self.properties = self.cloud + "Properties"
+        #: Which cloud report of the log (counted from the end) describes
+        #: the cloud written at the end time: OpenFOAM-13's clouds function
+        #: object moves the cloud at the start of the next time step, after
+        #: the write, so the last step is reported but not written
+        self.written_report = -2 if self.foundation else -1
+
+    def __str__(self):
+        return self.name
+
+    def kinds(self):
+        """The cloud kinds this platform can run."""
+        if self.foundation:
+            # DPMFoam's equivalent, the incompressibleDenseParticleFluid
+            # module, is not part of the project's OpenFOAM-13 build
+            return ("colliding", "kinematic", "MPPIC")
+        return ("colliding", "kinematic", "DPM", "MPPIC")
+
+    def solver(self, kind):
+        """The solver executable for a cloud kind."""
+        if kind not in self.kinds():
+            raise FoamError("cloud kind %s is not available on %s"
+                              % (kind, self.name))
+        if self.foundation:
+            return "foamRun"
+        return {"colliding": "icoUncoupledKinematicParcelFoam",
+                "kinematic": "uncoupledKinematicParcelFoam",
+                "DPM": "DPMFoam",
+                "MPPIC": "MPPICFoam"}[kind]
+
+    def cloud_type(self, kind):
+        """OpenFOAM-13's cloudProperties type of a cloud kind."""
+        return {"colliding": "collidingCloud", "kinematic": "cloud",
+                "MPPIC": "MPPICCloud"}[kind]
+
+    def dense(self, kind):
+        """Is the carrier phase solved (v1912's DPMFoam, MPPICFoam)?"""
+        return not self.foundation and kind in ("DPM", "MPPIC")
+
+    def unknown_model_message(self, model="roughWallInteraction"):
+        """OpenFOAM's message for a patch interaction model that is not
+        loaded (the troubleshooting symptom of a missing libs entry)."""
+        if self.foundation:
+            return "Unknown patch interaction model type " + model
+        return "Unknown patchInteractionModel type " + model
+
+
+
+LIBRARY = "libroughWallInteraction.so"
+
+def library_search_path():
+    """The directories the dynamic loader searches first
+    ($LD_LIBRARY_PATH; OpenFOAM's libs are found through it)."""
+    return [d for d in os.environ.get("LD_LIBRARY_PATH", "").split(":") if d]
+
+
+def find_library(name):
+    """The file the loader would open for dlopen(name), or None."""
+    for d in library_search_path():
+        path = os.path.join(d, name)
+        if os.path.isfile(path):
+            return path
+    return None
+
+
+def ldd(path):
+    """{library name: resolved path or 'not found'} of a binary."""
+    out = subprocess.run(["ldd", path], stdout=subprocess.PIPE,
+                         stderr=subprocess.STDOUT, text=True).stdout
+    deps = {}
+    for line in out.splitlines():
+        m = re.match(r"\s*(\S+)\s+=>\s+(\S+(?: found)?)", line)
+        if m:
+            deps[m.group(1)] = m.group(2)
+    return deps
+
+
+def environment_library(platform):
+    """The path of libroughWallInteraction.so in the environment of
+    platform (a Platform), which must be the only one sourced: a FoamError
+    names what is wrong (another OpenFOAM, the library not built)."""
+    version = os.environ.get("WM_PROJECT_VERSION")
+    if not os.environ.get("WM_PROJECT_DIR") or version != platform.version:
+        raise FoamError(
+            "not in the %s environment (WM_PROJECT_VERSION %r): run it as "
+            "etc/openfoamEnv %s /usr/bin/python3 <script> (ctest does)"
+            % (platform, version, platform))
+    lib = find_library(LIBRARY)
+    if lib is None:
+        raise FoamError("%s not found in $LD_LIBRARY_PATH of %s "
+                        "($FOAM_USER_LIBBIN = %s): build it first "
+                        "(./Allwmake)"
+                        % (LIBRARY, platform,
+                           os.environ.get("FOAM_USER_LIBBIN")))
+    return lib
