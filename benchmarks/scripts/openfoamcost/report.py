@@ -15,7 +15,13 @@ from .case import (BASE, L, MODEL_FILE, TUTORIAL_BASE, TUTORIAL_LIB_VARIANTS,
 from .parse import baseline_name
 
 
-PLATFORM_NAMES = {"openfoam13": "OpenFOAM-13", "openfoam1912": "OpenFOAM v1912"}
+PLATFORM_NAMES = {"openfoam13": "OpenFOAM-13", "openfoam14": "OpenFOAM-14",
+                  "openfoam1912": "OpenFOAM v1912"}
+#: The Foundation releases: foamRun with the clouds fvModel
+FOUNDATION = ("openfoam13", "openfoam14")
+#: Tags of results taken on openfoam.org's packaged OpenFOAM (/opt/openfoamNN,
+#: OpenFOAM's own -O3), run by openfoamCost.py directly
+PACKAGE_TAG = "-package"
 
 
 def write_markdown(name, lines):
@@ -198,6 +204,10 @@ def two_box_table(rows):
 def command_of(tag, platform, baseline=""):
     """The benchmarks/run command of a result (baseline: the directory of
     the rough-base library, build/benchmarks/baseline-<rev>/lib/...)"""
+    if tag.endswith(PACKAGE_TAG):
+        return ("PYTHONPATH=src/python etc/openfoamEnv %s /usr/bin/python3 "
+                "benchmarks/scripts/openfoamCost.py --platform %s --tag %s "
+                "--parcels 10000 --rounds 3 --mpi 0" % (platform, platform, tag))
     extra = " --openfoam-o3" if tag.endswith("-O3") else ""
     if baseline:
         extra += " --baseline " + baseline_name(baseline)
@@ -214,7 +224,7 @@ def table(tag, summary, rows):
                 PLATFORM_NAMES.get(platform, platform), tag,
                 command_of(tag, platform, rows[0].get("baseline")),
                 "foamRun (functions + incompressibleFluid, clouds fvModel), "
-                "collidingCloud" if platform == "openfoam13" else
+                "collidingCloud" if platform in FOUNDATION else
                 "icoUncoupledKinematicParcelFoam (colliding cloud)",
                 box[0]["rounds"] if box else 0, min(loads), max(loads)), ""]
     others = [v for v in variants if v != "standard"]
@@ -253,7 +263,11 @@ def table(tag, summary, rows):
               "exactly by unfolding the straight paths (checked: the rough "
               "model with roughnessAngle 0 counts the same), rough the "
               "model's count."]
-    if platform == "openfoam13":
+    if tag.endswith(PACKAGE_TAG):
+        lines += ["", "%s is openfoam.org's package (/opt/%s, OpenFOAM's own "
+                  "-O3 build, as users install it); libroughWallInteraction.so "
+                  "is -O3." % (PLATFORM_NAMES.get(platform, platform), platform)]
+    elif platform == "openfoam13":
         lines += ["", "OpenFOAM-13 is the project's own build, compiled at "
                   "-O1 (docs/openfoam13.md; %s); libroughWallInteraction.so "
                   "is -O3 on both platforms, v1912 is Debian's -O3 build." % (
@@ -280,10 +294,19 @@ def figure(summaries):
     styles = ["-", "--", ":", "-."]
     colours = {"standard": "k", "rebound": "C1", "rough": "C0", BASE: "C2",
                "standard.lib": "C7", "rough.lib": "C4"}
-    for (tag, summary), ls in zip(sorted(summaries.items()), styles):
+    # Only the results with several parcel counts draw a line: each of them
+    # gets a line style
+    lines = []
+    for tag, summary in sorted(summaries.items()):
         serial = [s for s in summary if s["np"] == 1 and s["mesh"] == "box"]
-        if len(serial) < 2:     # a single parcel count: no line to draw
-            continue
+        if len(serial) >= 2:
+            lines.append((tag, serial))
+    if not lines:
+        # (a run of one parcel count, e.g. a --tag of its own, must not
+        # overwrite the figure of the full runs with an empty one)
+        plt.close(fig)
+        return
+    for (tag, serial), ls in zip(lines, styles):
         n = [s["parcels"] for s in serial]
         for v in serial[0]["med"]:
             axes[0].loglog(n, [s["med"][v]["hits"]/s["med"][v]["step_cpu"]
@@ -323,7 +346,7 @@ def callgrind_table(tag, rows):
              "simulated (`%s`, its `--callgrind` step). Instructions per "
              "wall hit; correct() is called once per hit." % (
                  PLATFORM_NAMES.get(platform, platform), tag,
-                 "foamRun" if platform == "openfoam13"
+                 "foamRun" if platform in FOUNDATION
                  else "icoUncoupledKinematicParcelFoam",
                  rows[0]["parcels"], rows[0]["end_time"],
                  command_of(tag, platform, rows[0].get("baseline"))), "",
