@@ -236,7 +236,7 @@ Histogram sampleHistogram
     Uniform01 uniform01(settings.seed, incidence.degrees);
     for (long long i = 0; i < settings.samples; ++i)
     {
-        const double kv = select(Coefficients::of(sample(uniform01).rebound, incidence), which);
+        const double kv = select(coefficientsOf(sample(uniform01).rebound, incidence), which);
         if (kv < lo)
         {
             ++h.below;

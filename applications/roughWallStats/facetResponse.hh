@@ -72,7 +72,7 @@ public:
     //- The coefficients of the vector collision with the facet of tilt gamma
     Coefficients collide(double gamma, Regime* regime = nullptr) const
     {
-        return Coefficients::of(rebound(gamma, regime), in_);
+        return coefficientsOf(rebound(gamma, regime), in_);
     }
 
     //- The regime of the facet collision at tilt gamma (closed-form criterion)
@@ -119,15 +119,8 @@ public:
         Value value;
         value.vy = vy;
         value.dvy = dvy;
-        value.k.kn = vy/in_.sinAlpha;
-        value.dk.kn = dvy/in_.sinAlpha;
-        if (in_.tangentialDefined())
-        {
-            value.k.kt = vx/in_.cosAlpha;
-            value.dk.kt = dvx/in_.cosAlpha;
-            value.k.kOmega = rho/in_.cosAlpha;
-            value.dk.kOmega = drho/in_.cosAlpha;
-        }
+        value.k = coefficientsOf(Rebound{vx, vy, rho}, in_);
+        value.dk = coefficientsOf(Rebound{dvx, dvy, drho}, in_);
         return value;
     }
 

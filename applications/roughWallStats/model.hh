@@ -8,6 +8,7 @@
 #pragma once
 
 #include "facetCollision.hpp"
+#include "restitutionCoefficients.hpp"
 #include "gaussianMass.hpp"
 
 #include <cmath>
@@ -72,26 +73,18 @@ struct Rebound
     }
 };
 
-//- The restitution coefficients (2.5) of one outcome; kt, kOmega are 0 (not
-//  used) when the incidence has V'_x = 0
-struct Coefficients
-{
-    double kn = 0;       //!< signed -V''_y/V'_y
-    double kt = 0;       //!< V''_x/V'_x
-    double kOmega = 0;   //!< r Omega''_z/V'_x
+//- The restitution coefficients (2.5) of one outcome: the core's definition
+using Coefficients = roughWall::RestitutionCoefficients;
 
-    static Coefficients of(const Rebound& r, const Incidence& in)
-    {
-        Coefficients k;
-        k.kn = r.vy/in.sinAlpha;
-        if (in.tangentialDefined())
-        {
-            k.kt = r.vx/in.cosAlpha;
-            k.kOmega = r.rw/in.cosAlpha;
-        }
-        return k;
-    }
-};
+//- The coefficients of an outcome at an incidence; kt, kOmega are 0 (not
+//  used) when the incidence has V'_x = 0
+inline Coefficients coefficientsOf(const Rebound& r, const Incidence& in)
+{
+    return roughWall::restitutionCoefficients
+    (
+        in.cosAlpha, -in.sinAlpha, r.vx, r.vy, r.rw
+    );
+}
 
 //- Which coefficient a pdf is taken of
 enum class Coefficient { kn, kt, kOmega };

@@ -234,7 +234,7 @@ int runPdf(const Options& o)
             std::vector<double> k(pilot.samples);
             for (double& kv : k)
             {
-                kv = select(Coefficients::of(sample(uniform01).rebound, incidence), o.pdfOf);
+                kv = select(coefficientsOf(sample(uniform01).rebound, incidence), o.pdfOf);
             }
             std::sort(k.begin(), k.end());
             lo = k[10];

@@ -31,6 +31,7 @@ License
 #include "roughWallInput.H"
 #include "foamCompat.H"
 #include "coreVectors.H"
+#include "restitutionCoefficients.hpp"
 
 #include <cmath>
 #include <type_traits>
@@ -181,22 +182,17 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
 
     // Statistics, relative to the wall: k_n, and k_t along the incident
     // tangential velocity (none at normal incidence)
-    const scalar kn = -v.dot(n)/Un0;
-
-    const Vec3 Ut0(v0 - Un0*n);
-    const scalar Ut0Sqr = Ut0.squaredNorm();
-    const scalar v0Sqr = v0.squaredNorm();
-    const bool hasKt = Ut0Sqr > sqr(SMALL)*v0Sqr;
-    const scalar kt = hasKt ? v.dot(Ut0)/Ut0Sqr : 0;
+    const roughWall::WallHitCoefficients k =
+        roughWall::wallHitCoefficients(v0, v, n);
 
     const scalar energyLoss =
         p.nParticle()
        *(
-            0.5*p.mass()*(v0Sqr - v1Sqr)
+            0.5*p.mass()*(v0.squaredNorm() - v1Sqr)
           + rotationalEnergyLoss
         );
 
-    stats_.addHit(pp.index(), report, kn, hasKt, kt, energyLoss);
+    stats_.addHit(pp.index(), report, k.k.kn, k.hasKt, k.k.kt, energyLoss);
 }
 
 
