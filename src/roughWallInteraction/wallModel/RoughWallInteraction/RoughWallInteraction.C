@@ -31,6 +31,7 @@ License
 #include "roughWallInput.H"
 #include "foamCompat.H"
 #include "coreVectors.H"
+#include "cloudUniform01.H"
 #include "restitutionCoefficients.hpp"
 
 #include <cmath>
@@ -142,8 +143,7 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
     const scalar omega0Sqr = omega.squaredNorm();
 
     auto& rndGen = this->owner().rndGen();
-    roughWallCompat::cloudUniform01<std::remove_reference_t<decltype(rndGen)>>
-        uniform01(rndGen);
+    cloudUniform01<std::remove_reference_t<decltype(rndGen)>> uniform01(rndGen);
 
     const roughWall::RoughWallReport report =
         roughWall::collideWithRoughWall<withSpin>
