@@ -11,7 +11,7 @@
 //   sinCosHalfPi(x)           |x| <= pi/2 (the facet tilt)
 //   log1pMinus(u)             log(1 - u) for u in [0, 1)
 // The polynomial kernels are fdlibm's, each with error below 1 ulp; the
-// reductions here add at most ~2 ulp (tests/core/testFastMath.cpp). fdlibm's
+// reductions here add at most ~2 ulp (tests/core/testFastMath.cc). fdlibm's
 // notice, preserved as it asks:
 //
 //   Copyright (C) 1993 by Sun Microsystems, Inc. All rights reserved.

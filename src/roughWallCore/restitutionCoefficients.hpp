@@ -28,7 +28,31 @@ struct RestitutionCoefficients
     double absKn() const { return std::abs(kn); }
 };
 
-//- Coefficients (2.5) of one hit from incident (v1, w1) and outgoing (v2, w2)
+//- Coefficients (2.5) from the components, along t and N, of the incident
+//  velocity (vx1 = V'_x, vy1 = V'_y < 0) and of the rebound (vx2 = V''_x,
+//  vy2 = V''_y, rw2 = r Omega''_z): the one definition of k_n, k_t and
+//  k_Omega. k_t and k_Omega are left 0 where V'_x = 0 (normal incidence:
+//  the plane of incidence, and so t, is undefined)
+inline RestitutionCoefficients restitutionCoefficients
+(
+    double vx1,
+    double vy1,
+    double vx2,
+    double vy2,
+    double rw2
+)
+{
+    RestitutionCoefficients k;
+    k.kn = -vy2/vy1;
+    if (vx1 != 0)
+    {
+        k.kt = vx2/vx1;
+        k.kOmega = rw2/vx1;
+    }
+    return k;
+}
+
+//- Coefficients (2.5) of one hit from incident (v1) and outgoing (v2, w2)
 //  velocities and spins; t is the unit tangent of the plane of incidence
 inline RestitutionCoefficients restitutionCoefficients
 (
@@ -40,13 +64,51 @@ inline RestitutionCoefficients restitutionCoefficients
     double radius
 )
 {
-    const double vx = v1.dot(t);
-    const double vy = v1.dot(wallNormal);
-    RestitutionCoefficients k;
-    k.kn = -v2.dot(wallNormal)/vy;
-    k.kt = v2.dot(t)/vx;
-    k.kOmega = radius*w2.dot(t.cross(wallNormal))/vx;
-    return k;
+    return restitutionCoefficients
+    (
+        v1.dot(t),
+        v1.dot(wallNormal),
+        v2.dot(t),
+        v2.dot(wallNormal),
+        radius*w2.dot(t.cross(wallNormal))
+    );
+}
+
+//- A tangential part of the incident velocity at most this fraction of its
+//  magnitude counts as normal incidence: its direction is round-off
+constexpr double normalIncidenceTangentialFraction = 1e-15;
+
+//- k_n and k_t of a wall hit without spin, and whether k_t is defined
+struct WallHitCoefficients
+{
+    RestitutionCoefficients k;   //!< kOmega is 0
+    bool hasKt = false;          //!< false at normal incidence (k.kt 0)
+};
+
+//- k_n and k_t (2.5) of a wall hit from the incident (v1) and rebound (v2)
+//  velocities relative to the wall, k_t along the incident tangential
+//  velocity (t = its direction)
+inline WallHitCoefficients wallHitCoefficients
+(
+    const Vec3& v1,
+    const Vec3& v2,
+    const Vec3& wallNormal
+)
+{
+    constexpr double f = normalIncidenceTangentialFraction;
+    const double vy1 = v1.dot(wallNormal);
+    const Vec3 vt1 = v1 - vy1*wallNormal;
+    const double vt1Sqr = vt1.squaredNorm();
+
+    WallHitCoefficients hit;
+    hit.hasKt = vt1Sqr > f*f*v1.squaredNorm();
+    const double vx1 = hit.hasKt ? std::sqrt(vt1Sqr) : 0;
+    const Vec3 t = hit.hasKt ? Vec3(vt1/vx1) : Vec3::Zero();
+    hit.k = restitutionCoefficients
+    (
+        vx1, vy1, v2.dot(t), v2.dot(wallNormal), 0
+    );
+    return hit;
 }
 
 //- Closed forms (2.6) (rolling/no-slip) and (2.7) (sliding) as corrected,

@@ -243,7 +243,7 @@ class Builder:
             return run(cmd, self.log, env=self.env) == 0
         script = ('export WM_OPTIONS="${WM_OPTIONS}OpenFOAM${WM_PROJECT_VERSION}"; '
                   'export WM_NCOMPPROCS=%d; '
-                  'wmake -s libso src/roughWallInteraction' % self.jobs)
+                  'wmake -s libso' % self.jobs)
         return run([os.path.join(self.tree, "etc", "openfoamEnv"),
                     self.platform, "bash", "-c", script],
                    self.log, env=self.env, cwd=self.tree) == 0

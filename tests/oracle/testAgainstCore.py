@@ -2,7 +2,7 @@
 the particle leaves, fallback at the bound, spin, lateral tilt) against the
 C++ core's own Monte Carlo: two independent implementations.
 
-1. roughWallReference (tests/openfoam/roughWallReference.cpp: the core's
+1. roughWallReference (tests/openfoam/roughWallReference.cc: the core's
    collideWithRoughWall, 3-D, v = (cos a, -sin a, 0) on the wall y = 0,
    mt19937_64): mean and sd of k_n and k_t. Cases (spin; lateral; Delta; e,
    mu0, muD; max facet collisions; alpha):

@@ -1,0 +1,172 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | roughWallInteraction: rough-wall particle
+   \\    /   O peration     | collisions for OpenFOAM's Lagrangian clouds
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 The roughWallInteraction authors
+-------------------------------------------------------------------------------
+License
+    This file is part of roughWallInteraction.
+
+    roughWallInteraction is free software: you can redistribute it and/or
+    modify it under the terms of the GNU General Public License as published
+    by the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    roughWallInteraction is distributed in the hope that it will be useful,
+    but WITHOUT ANY WARRANTY; without even the implied warranty of
+    MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General
+    Public License for more details.
+
+    You should have received a copy of the GNU General Public License along
+    with roughWallInteraction.  If not, see <http://www.gnu.org/licenses/>.
+
+    SPDX-License-Identifier: GPL-3.0-or-later
+
+\*---------------------------------------------------------------------------*/
+
+#include "RotationalLiftForce.H"
+#include "spinModelInput.H"
+#include "foamCompat.H"
+#include "coreVectors.H"
+#include "fvcCurl.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::RotationalLiftForce<CloudType>::RotationalLiftForce
+(
+    CloudType& owner,
+    const fvMesh& mesh,
+    const dictionary& dict
+)
+:
+    ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
+    coefficient_(roughWall::spin::LiftCoefficient::OesterleBuiDinh),
+    vorticityPtr_(),
+    vorticityInterpPtr_()
+{
+    if constexpr (!withSpin)
+    {
+        spinModelInput::fatalNoSpin
+        (
+            this->coeffs(), typeName, owner.name(),
+            roughWallCompat::cloudTypeName(owner)
+        );
+    }
+
+    spinModelInput::checkKeywords(this->coeffs(), typeName, {"coefficient"});
+
+    coefficient_ = spinModelInput::readLiftCoefficient(this->coeffs());
+
+    Info<< "    rotationalLift: coefficient "
+        << spinModelInput::name(coefficient_).c_str() << endl;
+}
+
+
+template<class CloudType>
+Foam::RotationalLiftForce<CloudType>::RotationalLiftForce
+(
+    const RotationalLiftForce& lf
+)
+:
+    ParticleForce<CloudType>(lf),
+    coefficient_(lf.coefficient_),
+    vorticityPtr_(),
+    vorticityInterpPtr_()
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::RotationalLiftForce<CloudType>::cacheFields(const bool store)
+{
+    vorticityInterpPtr_.clear();
+    vorticityPtr_.clear();
+
+    if (!store)
+    {
+        return;
+    }
+
+    const volVectorField& Uc = this->owner().U();
+
+    vorticityPtr_.reset
+    (
+        new volVectorField
+        (
+            IOobject::groupName
+            (
+                this->owner().name() + ":rotationalLiftVorticity",
+                Uc.group()
+            ),
+            0.5*fvc::curl(Uc)
+        )
+    );
+
+    // The cloud's interpolation of the carrier velocity
+    const word scheme
+    (
+        this->owner().solution().interpolationSchemes().lookup(Uc.name())
+    );
+
+    vorticityInterpPtr_.reset
+    (
+        interpolation<vector>::New(scheme, vorticityPtr_()).ptr()
+    );
+}
+
+
+template<class CloudType>
+Foam::forceSuSp Foam::RotationalLiftForce<CloudType>::calcCoupled
+(
+    const parcelType& p,
+    const typename parcelType::trackingData& td,
+    const scalar dt,
+    const scalar mass,
+    const scalar Re,
+    const scalar muc
+) const
+{
+    forceSuSp value(Zero, 0);
+
+    if constexpr (withSpin)
+    {
+        const scalar I = p.momentOfInertia();
+
+        if (I > 0 && vorticityInterpPtr_.valid())
+        {
+            using roughWallCompat::toCore;
+
+            const vector vorticity =
+                vorticityInterpPtr_->interpolate
+                (
+                    p.coordinates(),
+                    roughWallCompat::currentTetIndices(p, this->mesh())
+                );
+
+            const scalar rhoc = td.rhoc();
+
+            value.Su() = roughWallCompat::toFoam
+            (
+                roughWall::spin::rotationalLift
+                (
+                    toCore(td.Uc() - p.U()),
+                    toCore(vorticity - p.angularMomentum()/I),
+                    p.d(),
+                    rhoc,
+                    muc/rhoc,
+                    coefficient_
+                )
+            );
+        }
+    }
+
+    return value;
+}
+
+
+// ************************************************************************* //

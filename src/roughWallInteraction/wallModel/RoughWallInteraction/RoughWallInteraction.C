@@ -1,0 +1,442 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | roughWallInteraction: rough-wall particle
+   \\    /   O peration     | collisions for OpenFOAM's Lagrangian clouds
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 The roughWallInteraction authors
+-------------------------------------------------------------------------------
+License
+    This file is part of roughWallInteraction.
+
+    roughWallInteraction is free software: you can redistribute it and/or
+    modify it under the terms of the GNU General Public License as published
+    by the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    roughWallInteraction is distributed in the hope that it will be useful,
+    but WITHOUT ANY WARRANTY; without even the implied warranty of
+    MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General
+    Public License for more details.
+
+    You should have received a copy of the GNU General Public License along
+    with roughWallInteraction.  If not, see <http://www.gnu.org/licenses/>.
+
+    SPDX-License-Identifier: GPL-3.0-or-later
+
+\*---------------------------------------------------------------------------*/
+
+#include "RoughWallInteraction.H"
+#include "roughWallInput.H"
+#include "foamCompat.H"
+#include "coreVectors.H"
+#include "cloudUniform01.H"
+#include "restitutionCoefficients.hpp"
+
+#include <cmath>
+#include <type_traits>
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::RoughWallInteraction<CloudType>::rebound
+(
+    parcelType& p,
+    const polyPatch& pp,
+    const roughWallPatchData& data
+)
+{
+    // standardWallInteraction's rebound, term for term
+    vector& U = p.U();
+
+    vector nw;
+    vector Up;
+    this->owner().patchData(p, pp, nw, Up);
+    watchWallVelocity(pp.index(), Up);
+
+    // Calculate motion relative to patch velocity
+    U -= Up;
+
+    const scalar Un = U & nw;
+    const vector Ut = U - Un*nw;
+
+    if (Un > 0)
+    {
+        U -= (1.0 + data.e())*Un*nw;
+    }
+
+    U -= data.mu()*Ut;
+
+    // Return velocity to global space
+    U += Up;
+}
+
+
+template<class CloudType>
+void Foam::RoughWallInteraction<CloudType>::roughRebound
+(
+    parcelType& p,
+    const polyPatch& pp,
+    const roughWallPatchData& data
+)
+{
+    using roughWall::Vec3;
+
+    vector nw;
+    vector Up;
+    this->owner().patchData(p, pp, nw, Up);
+    watchWallVelocity(pp.index(), Up);
+
+    // From here on the core's vectors, relative to the wall. The core's wall
+    // normal points into the fluid, OpenFOAM's out of it
+    using roughWallCompat::toCore;
+    using roughWallCompat::toFoam;
+    Vec3 n(toCore(-nw));
+    Vec3 v(toCore(p.U() - Up));
+
+    // 2-D: the projection onto the solution plane, once. With the empty
+    // components of n, v and (below) the spin exactly zero the core keeps
+    // them zero: its facet normals, impulses and spin changes have no
+    // empty component, so the rebound needs no projection
+    const label emptyCmpt = patches_.emptyComponent();
+    Vec3 emptyDirection(Vec3::Zero());
+    if (emptyCmpt >= 0)
+    {
+        n[emptyCmpt] = 0;
+        n /= n.norm();
+        v[emptyCmpt] = 0;
+        emptyDirection[emptyCmpt] = 1;
+    }
+
+    const scalar Un0 = v.dot(n);
+
+    // Only parcels moving into the wall are changed
+    if (!(Un0 < 0))
+    {
+        return;
+    }
+
+    const Vec3 v0(v);
+    Vec3 omega(Vec3::Zero());
+    scalar I = 0;
+
+    if constexpr (withSpin)
+    {
+        I = p.momentOfInertia();
+        if (I > 0)
+        {
+            // 2-D: only spin about the empty direction keeps the motion in
+            // the plane
+            const vector& L = p.angularMomentum();
+            if (emptyCmpt >= 0)
+            {
+                omega[emptyCmpt] = L[emptyCmpt]/I;
+            }
+            else
+            {
+                omega = toCore(L/I);
+            }
+        }
+    }
+
+    const scalar omega0Sqr = omega.squaredNorm();
+
+    auto& rndGen = this->owner().rndGen();
+    cloudUniform01<std::remove_reference_t<decltype(rndGen)>> uniform01(rndGen);
+
+    const roughWall::RoughWallReport report =
+        roughWall::collideWithRoughWall<withSpin>
+        (
+            v,
+            omega,
+            n,
+            0.5*p.d(),
+            data.parameters(p.d()),
+            uniform01,
+            emptyDirection
+        );
+
+    const scalar v1Sqr = v.squaredNorm();
+    const scalar omega1Sqr = omega.squaredNorm();
+
+    if (!std::isfinite(v1Sqr) || !std::isfinite(omega1Sqr))
+    {
+        FatalErrorInFunction
+            << "Non-finite rebound on patch " << pp.name()
+            << " for a parcel of diameter " << p.d()
+            << " with velocity " << p.U() << " relative to the wall "
+            << toFoam(v0) << " (core result: velocity " << toFoam(v)
+            << ", spin " << toFoam(omega) << ")." << exit(FatalError);
+    }
+
+    p.U() = toFoam(v) + Up;
+
+    scalar rotationalEnergyLoss = 0;
+
+    if constexpr (withSpin)
+    {
+        p.angularMomentum() = toFoam(I*omega);
+        rotationalEnergyLoss = 0.5*I*(omega0Sqr - omega1Sqr);
+    }
+
+    // Statistics, relative to the wall: k_n, and k_t along the incident
+    // tangential velocity (none at normal incidence)
+    const roughWall::WallHitCoefficients k =
+        roughWall::wallHitCoefficients(v0, v, n);
+
+    const scalar energyLoss =
+        p.nParticle()
+       *(
+            0.5*p.mass()*(v0.squaredNorm() - v1Sqr)
+          + rotationalEnergyLoss
+        );
+
+    stats_.addHit(pp.index(), report, k.k.kn, k.hasKt, k.k.kt, energyLoss);
+}
+
+
+template<class CloudType>
+void Foam::RoughWallInteraction<CloudType>::reportWallVelocity(Ostream& os)
+{
+    scalarList speedSqr(wallSpeedSqr_);
+    Pstream::listCombineGather(speedSqr, maxEqOp<scalar>());
+    Pstream::listCombineScatter(speedSqr);
+
+    forAll(speedSqr, patchi)
+    {
+        const scalar reported = wallSpeedSqrReported_[patchi];
+
+        // A first hit, or a wall faster than reported by more than 1 %
+        if (speedSqr[patchi] < 0 || speedSqr[patchi] <= reported*sqr(1.01))
+        {
+            continue;
+        }
+        wallSpeedSqrReported_[patchi] = speedSqr[patchi];
+
+        const word& name = patches_.name(patchi);
+        const scalar speed = sqrt(speedSqr[patchi]);
+
+        os  << "    Wall velocity (patchData) of patch " << name.c_str()
+            << ": largest speed " << speed << " m/s"
+            << (speed > 0 ? ", the wall moves" : ", at rest") << nl;
+
+        if (speed > 0)
+        {
+            WarningInFunction
+                << "Patch " << name << " moves: the cloud hands "
+                << typeName << " a wall velocity of up to " << speed
+                << " m/s there, and the parcels rebound from the moving"
+                << " wall. A fixedValue velocity condition on a wall patch"
+                << " is the wall's own velocity to a cloud. If the wall is"
+                << " at rest, give the velocity a condition that fixes no"
+                << " non-zero value there (noSlip, slip, zeroGradient,"
+                << " calculated)." << endl;
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::RoughWallInteraction<CloudType>::checkCoeffsKeywords() const
+{
+    // Settings put at the wrong level (e.g. e or lateralTilt outside the
+    // patches entries) would be ignored silently. (The base class also
+    // reads the name of the velocity field, U, which this model never uses)
+    roughWallInput::checkKeywords
+    (
+        roughWallCompat::coeffs(*this),
+        {"patches", "writeToFile", "writePrecision"},
+        string
+        (
+            typeName + "Coeffs (the settings of a patch go inside its entry"
+            " of patches)"
+        )
+    );
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
+(
+    const dictionary& dict,
+    CloudType& cloud
+)
+:
+    PatchInteractionModel<CloudType>(dict, cloud, typeName),
+    patches_(roughWallCompat::coeffs(*this), cloud.mesh()),
+    stats_(patches_.nNonProcessor()),
+    file_(),
+    wallSpeedSqr_(patches_.nNonProcessor(), scalar(-1)),
+    wallSpeedSqrReported_(patches_.nNonProcessor(), scalar(-1))
+{
+    if (patches_.anyRough())
+    {
+        Info<< "    Rough-wall parcels carry spin: "
+            << (withSpin ? "yes (angularMomentum)" : "no") << nl;
+    }
+
+    checkCoeffsKeywords();
+
+    // v1912's base class would write a file of its own when the
+    // coefficients say writeToFile: the statistics file replaces it
+    if constexpr (roughWallCompat::esi)
+    {
+        this->writeToFile_ = false;
+    }
+
+    const bool writeToFile = roughWallInput::readSwitchOrDefault
+    (
+        roughWallCompat::coeffs(*this), "writeToFile",
+        "write the statistics under postProcessing/ (default: true)",
+        true
+    );
+
+    const label precision = roughWallInput::readLabelOrDefault
+    (
+        roughWallCompat::coeffs(*this), "writePrecision",
+        {1, 17, "significant digits of the statistics file (default: "
+            "controlDict's writePrecision)"},
+        IOstream::defaultPrecision()
+    );
+
+    if (writeToFile)
+    {
+        file_ = roughWallStatistics::openFile
+        (
+            cloud.mesh(), cloud.name(), patches_, precision
+        );
+    }
+}
+
+
+template<class CloudType>
+Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
+(
+    const RoughWallInteraction<CloudType>& pim
+)
+:
+    PatchInteractionModel<CloudType>(pim),
+    patches_(pim.patches_),
+    stats_(pim.stats_),
+    file_(),
+    wallSpeedSqr_(pim.wallSpeedSqr_),
+    wallSpeedSqrReported_(pim.wallSpeedSqrReported_)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+bool Foam::RoughWallInteraction<CloudType>::correct
+(
+    parcelType& p,
+    const polyPatch& pp,
+    bool& keepParticle
+)
+{
+    const roughWallPatchData* data = patches_.find(pp.index());
+
+    // Coupled, empty and wedge patches: OpenFOAM's own handling
+    if (!data)
+    {
+        return false;
+    }
+
+    switch (data->type())
+    {
+        case interactionType::none:
+        {
+            return false;
+        }
+        case interactionType::escape:
+        {
+            keepParticle = false;
+            roughWallCompat::setMoving(p, false);
+            p.U() = Zero;
+            stats_.addEscape(pp.index(), p.nParticle()*p.mass());
+            return true;
+        }
+        case interactionType::stick:
+        {
+            keepParticle = true;
+            roughWallCompat::setMoving(p, false);
+            p.U() = Zero;
+            stats_.addStick(pp.index(), p.nParticle()*p.mass());
+            return true;
+        }
+        case interactionType::rebound:
+        {
+            keepParticle = true;
+            roughWallCompat::setMoving(p, true);
+            rebound(p, pp, *data);
+            return true;
+        }
+        case interactionType::rough:
+        {
+            keepParticle = true;
+            roughWallCompat::setMoving(p, true);
+            roughRebound(p, pp, *data);
+            return true;
+        }
+    }
+
+    return false;
+}
+
+
+template<class CloudType>
+void Foam::RoughWallInteraction<CloudType>::info(ROUGHWALL_INFO_PARAMETERS)
+{
+    // ESI: the system escapes
+    PatchInteractionModel<CloudType>::info(ROUGHWALL_INFO_ARGUMENTS);
+
+    // This run's counters of all processors plus the totals stored at the
+    // last write time (restart)
+    roughWallStatistics total(stats_.reduced());
+    {
+        roughWallStatistics stored(stats_.nPatches());
+        const label nCounts = stored.counts().size();
+        const label nSums = stored.sums().size();
+
+        this->getModelProperty("counts", stored.counts());
+        this->getModelProperty("sums", stored.sums());
+
+        if
+        (
+            stored.counts().size() == nCounts
+         && stored.sums().size() == nSums
+        )
+        {
+            total += stored;
+        }
+        else
+        {
+            WarningInFunction
+                << "Ignoring stored statistics of a different patch layout"
+                << endl;
+        }
+    }
+
+    total.write
+    (
+        ROUGHWALL_INFO_STREAM,
+        file_.valid() ? &file_() : nullptr,
+        patches_,
+        this->owner().mesh().time()
+    );
+
+    reportWallVelocity(ROUGHWALL_INFO_STREAM);
+
+    if (this->writeTime())
+    {
+        this->setModelProperty("counts", total.counts());
+        this->setModelProperty("sums", total.sums());
+        stats_.reset();
+    }
+}
+
+
+// ************************************************************************* //
