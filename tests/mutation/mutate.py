@@ -224,9 +224,19 @@ class Builder:
         self.env = dict(os.environ)
         if level == "openfoam":
             # A private HOME: FOAM_USER_LIBBIN (and the OpenFOAM user
-            # directory) under the copy, so that no other library is touched
-            home = os.path.join(tree, "home")
+            # directory) of the copy's own, so that no other library is
+            # touched. Beside the copy, not in it: wmake links every header
+            # under the folder of Make/ into lnInclude, and the OpenFOAM
+            # trees of a cache there would be linked too. The cache of the
+            # set-up stays the caller's (no second download of v1912's
+            # headers)
+            home = os.path.join(os.path.dirname(os.path.abspath(tree)), "home")
             os.makedirs(home, exist_ok=True)
+            self.env.setdefault(
+                "ROUGHWALL_CACHE",
+                os.path.join(os.environ.get("XDG_CACHE_HOME")
+                             or os.path.join(os.path.expanduser("~"), ".cache"),
+                             "roughWallInteraction"))
             self.env["HOME"] = home
 
     def configure(self):
