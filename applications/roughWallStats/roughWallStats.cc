@@ -17,6 +17,7 @@
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iostream>
@@ -130,8 +131,10 @@ int writeAndPlot
         std::cout.flush();
         if (!o.plotFile.empty())
         {
-            char name[] = "/tmp/roughWallStats-XXXXXX";
-            const int fd = mkstemp(name);
+            // In the system's temporary folder ($TMPDIR, else /tmp)
+            std::string name =
+                (std::filesystem::temp_directory_path()/"roughWallStats-XXXXXX").string();
+            const int fd = mkstemp(name.data());
             if (fd < 0)
             {
                 std::cerr << "roughWallStats: cannot create a temporary file for --plot\n";
