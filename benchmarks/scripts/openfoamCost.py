@@ -72,8 +72,8 @@ benchmarks/results/openfoam-callgrind.<tag>.md and .csv.
 --profile: perf (software clock) profiles of the rough and the standard run
 of the middle parcel count: openfoam-profile-<variant>.<tag>.txt.
 
---tutorial (openfoam13 only: the tutorial is OpenFOAM-13's): the tutorial
-tutorials/incompressibleFluid/horizontalChannel (195 um, 4000 parcels, 1 s
+--tutorial (openfoam13 or openfoam14, the tutorial's releases): the tutorial
+tutorials/incompressibleFluid/horizontalChannel (195 um, 4000 parcels, 3 s
 spin-up + 1 s sampled, dt = 1 ms; --quick: 500 parcels, 0.2 s + 0.2 s),
 each variant run by its own Allrun (tutorialWorkPrecision.run_config), with
 OpenFOAM's standardWallInteraction (standard) and the library's smooth and
@@ -186,9 +186,10 @@ def main():
         args.callgrind_parcels, args.callgrind_end_time = 500, 0.02
     bc.ensure_dirs()
     if args.tutorial:
-        if args.platform != "openfoam13" and not args.plot_only:
-            sys.exit("openfoamCost.py --tutorial: the tutorial is "
-                     "OpenFOAM-13's (--platform openfoam13)")
+        if args.platform not in ("openfoam13", "openfoam14") \
+                and not args.plot_only:
+            sys.exit("openfoamCost.py --tutorial: the tutorial runs on the "
+                     "Foundation releases (--platform openfoam14 or openfoam13)")
         tutorial_cost(args)
         return
     if args.plot_only:

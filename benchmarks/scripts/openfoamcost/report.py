@@ -422,14 +422,27 @@ def tutorial_table(rows, tag=None):
 
     r0 = rows[0]
     loads = [float(r["load"]) for r in rows]
-    text = ["OpenFOAM-13, tutorial incompressibleFluid/horizontalChannel "
+    platform = r0.get("platform") or "openfoam13"
+    if tag and tag.endswith(PACKAGE_TAG):
+        command = ("`PYTHONPATH=src/python etc/openfoamEnv %s /usr/bin/python3 "
+                   "benchmarks/scripts/openfoamCost.py --platform %s --tag %s "
+                   "--tutorial --rounds %d`" % (platform, platform, tag,
+                                                len({r["round"] for r in rows})))
+        build = ("openfoam.org's package (/opt/%s, OpenFOAM's own -O3)"
+                 % platform)
+    else:
+        command = ("`benchmarks/run --platform %s openfoam`, its "
+                   "`openfoamCost.py --tutorial` step" % platform)
+        build = "the project's build"
+    text = ["%s (%s), tutorial incompressibleFluid/horizontalChannel "
             "(195 um, %s parcels, %s s spin-up + %s s sampled, dt = 1 ms), "
             "each variant by the tutorial's Allrun, serial, %d rounds, the "
             "order reversed every other round; load average %.1f-%.1f "
-            "(`benchmarks/run --platform openfoam13 openfoam`, its "
-            "`openfoamCost.py --tutorial` step)." % (
+            "(%s)." % (
+                PLATFORM_NAMES.get(platform, platform), build,
                 r0["parcels"], r0["spin_up"], r0["sampling"],
-                len({r["round"] for r in rows}), min(loads), max(loads)), "",
+                len({r["round"] for r in rows}), min(loads), max(loads),
+                command), "",
             "| variant | runs | solver CPU [s] (range) | wall clock [s] | "
             "lower-wall hits per parcel and metre | upper-half fraction |",
             "|---|---|---|---|---|---|"]
