@@ -164,25 +164,22 @@ void Foam::roughWallInput::checkKeywords
     for (const entry& e : dict)
     {
         const word& key = e.keyword();
+        if (std::find(used.begin(), used.end(), key) != used.end())
+        {
+            continue;
+        }
+
+        // The closest used keyword, for the message
         label closest = -1;
         std::size_t closestDistance = 0;
         forAll(used, i)
         {
             const std::size_t d = editDistance(key, used[i]);
-            if (d == 0)
-            {
-                closest = -2;
-                break;
-            }
             if (closest == -1 || d < closestDistance)
             {
                 closest = i;
                 closestDistance = d;
             }
-        }
-        if (closest == -2)
-        {
-            continue;
         }
 
         OStringStream allowed;

@@ -156,7 +156,7 @@ void Foam::roughnessAngleTable::readProfile
             dict.name() + (roughWallCompat::esi ? "." : "/") + keyword
         );
 
-    static const char* const names[] = {"Ra", "Rq", "Rz", "RSm"};
+    static const wordList names{"Ra", "Rq", "Rz", "RSm"};
     static const char* const meanings[] =
     {
         "arithmetic mean height of the profile [m]",
@@ -165,23 +165,7 @@ void Foam::roughnessAngleTable::readProfile
         "mean width of the profile elements [m]"
     };
 
-    for (const entry& e : rDict)
-    {
-        bool known = false;
-        for (const char* name : names)
-        {
-            known = known || e.keyword() == name;
-        }
-        if (!known)
-        {
-            fatalBadEntry
-            (
-                rDict, e.keyword(),
-                "only the keywords Ra, Rq, Rz and RSm", profileMeaning,
-                "unknown keyword '" + e.keyword() + "'"
-            );
-        }
-    }
+    checkKeywords(rDict, names, keyword);
 
     scalar values[4] = {0, 0, 0, 0};
     bool given[4] = {false, false, false, false};
