@@ -329,7 +329,7 @@ def main():
     parser.add_argument("--report", help="markdown report to write")
     parser.add_argument("--only", help="comma-separated fault names")
     parser.add_argument("--platform", default="openfoam13",
-                        choices=["openfoam13", "openfoam1912"])
+                        choices=["openfoam13", "openfoam14", "openfoam1912"])
     parser.add_argument("--work", help="folder of the copy (default: a new "
                         "temporary folder, removed at the end)")
     parser.add_argument("--keep", action="store_true",
