@@ -186,8 +186,7 @@ def main():
         args.callgrind_parcels, args.callgrind_end_time = 500, 0.02
     bc.ensure_dirs()
     if args.tutorial:
-        if args.platform not in ("openfoam13", "openfoam14") \
-                and not args.plot_only:
+        if not fc.Platform(args.platform).foundation and not args.plot_only:
             sys.exit("openfoamCost.py --tutorial: the tutorial runs on the "
                      "Foundation releases (--platform openfoam14 or openfoam13)")
         tutorial_cost(args)

@@ -9,6 +9,7 @@ import os
 import statistics
 
 import benchCommon as bc
+import foamcase as fc
 
 from .case import (BASE, L, MODEL_FILE, TUTORIAL_BASE, TUTORIAL_LIB_VARIANTS,
                    TUTORIAL_VARIANTS, TWO_BOXES, variants_of)
@@ -17,8 +18,6 @@ from .parse import baseline_name
 
 PLATFORM_NAMES = {"openfoam13": "OpenFOAM-13", "openfoam14": "OpenFOAM-14",
                   "openfoam1912": "OpenFOAM v1912"}
-#: The Foundation releases: foamRun with the clouds fvModel
-FOUNDATION = ("openfoam13", "openfoam14")
 #: Tags of results taken on openfoam.org's packaged OpenFOAM (/opt/openfoamNN,
 #: OpenFOAM's own -O3), run by openfoamCost.py directly
 PACKAGE_TAG = "-package"
@@ -224,8 +223,8 @@ def table(tag, summary, rows):
                 PLATFORM_NAMES.get(platform, platform), tag,
                 command_of(tag, platform, rows[0].get("baseline")),
                 "foamRun (functions + incompressibleFluid, clouds fvModel), "
-                "collidingCloud" if platform in FOUNDATION else
-                "icoUncoupledKinematicParcelFoam (colliding cloud)",
+                "collidingCloud" if fc.Platform(platform).foundation else
+                "%s (colliding cloud)" % fc.Platform(platform).solver("colliding"),
                 box[0]["rounds"] if box else 0, min(loads), max(loads)), ""]
     others = [v for v in variants if v != "standard"]
     lines = head + [
@@ -346,8 +345,7 @@ def callgrind_table(tag, rows):
              "simulated (`%s`, its `--callgrind` step). Instructions per "
              "wall hit; correct() is called once per hit." % (
                  PLATFORM_NAMES.get(platform, platform), tag,
-                 "foamRun" if platform in FOUNDATION
-                 else "icoUncoupledKinematicParcelFoam",
+                 fc.Platform(platform).solver("colliding"),
                  rows[0]["parcels"], rows[0]["end_time"],
                  command_of(tag, platform, rows[0].get("baseline"))), "",
              "| variant | wall hits | correct() calls | whole run [10^6 "
