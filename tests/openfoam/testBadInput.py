@@ -45,7 +45,9 @@ def settings(rough=None, outlet="outlet { type escape; }", patches=True,
     remove a keyword), the outlet entry given and extra coefficients."""
     entries = dict(ROUGH)
     entries.update(rough or {})
-    body = "\n".join("            %-15s %s;" % (k, v)
+    # (a sub-dictionary value, "{ ... }", takes no semicolon)
+    body = "\n".join("            %-15s %s%s" % (k, v, "" if v.endswith("}")
+                                                   else ";")
                      for k, v in entries.items() if v is not None)
     patch_list = """    patches
     (

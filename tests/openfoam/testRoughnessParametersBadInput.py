@@ -27,8 +27,7 @@ def rough(body, angle=None):
     """Settings with roughness { body } instead of roughnessAngle (or with
     both if angle is given)."""
     return b.settings({"roughnessAngle": angle,
-                       "roughness": "{ %s }" % body}).replace(
-        "roughness       { %s };" % body, "roughness       { %s }" % body)
+                       "roughness": "{ %s }" % body})
 
 
 IN = b.IN_PATCH
