@@ -71,48 +71,29 @@ def replace_block(text, keyword, replacement):
     return text[:m.start()] + "\n" + replacement + text[i:]
 
 
-def set_entry(text, keyword, value):
-    text, n = re.subn(r"^(\s*%s\s+)[^;]*;" % re.escape(keyword),
-                      lambda m: m.group(1) + value + ";", text, count=1,
-                      flags=re.M)
-    if n != 1:
-        raise ValueError("no entry %s" % keyword)
-    return text
-
-
-def edit(path, fn):
-    with open(path) as f:
-        text = f.read()
-    with open(path, "w") as f:
-        f.write(fn(text))
-
-
 def prepare(case, fixed_walls):
     """Forces off, slow parcels, a write every step; the control gets the
     fixedValue walls of the old mapping."""
-    def cloud(text):
-        text = replace_block(text, "particleForces", "    particleForces\n"
-                             "    {\n    }\n")
-        text = set_entry(text, "dispersionModel", "none")
-        text = set_entry(text, "U0", U0)
-        return text
+    cloud = os.path.join(case, "constant", "cloudProperties")
+    fc.write_text(cloud, replace_block(fc.read_text(cloud), "particleForces",
+                                       "    particleForces\n    {\n    }\n"))
+    fc.set_entry(cloud, "dispersionModel", "none")
+    fc.set_entry(cloud, "U0", U0)
 
-    def control(text):
-        text = set_entry(text, "endTime", "%g" % END_TIME)
-        text = set_entry(text, "deltaT", "%g" % DT)
-        text = set_entry(text, "writeInterval", "%g" % DT)
-        return set_entry(text, "writePrecision", "15")
+    control = os.path.join(case, "system", "controlDict")
+    fc.set_entry(control, "endTime", "%g" % END_TIME)
+    fc.set_entry(control, "deltaT", "%g" % DT)
+    fc.set_entry(control, "writeInterval", "%g" % DT)
+    fc.set_entry(control, "writePrecision", "15")
 
-    edit(os.path.join(case, "constant", "cloudProperties"), cloud)
-    edit(os.path.join(case, "system", "controlDict"), control)
     if fixed_walls:
-        def walls(text):
-            text, n = re.subn(r"(lowerWall|upperWall)(\s*\{\s*type\s+)"
-                              r"calculated;", r"\1\2fixedValue;", text)
-            if n != 2:
-                raise ValueError("0/U: no calculated walls to fix")
-            return text
-        edit(os.path.join(case, "0", "U"), walls)
+        path = os.path.join(case, "0", "U")
+        text, n = re.subn(r"(lowerWall|upperWall)(\s*\{\s*type\s+)"
+                          r"calculated;", r"\1\2fixedValue;",
+                          fc.read_text(path))
+        if n != 2:
+            raise ValueError("0/U: no calculated walls to fix")
+        fc.write_text(path, text)
 
 
 def wall_speeds(log):
@@ -164,9 +145,7 @@ def run(work, fixed_walls):
                    check=True)
     case = os.path.join(tutorial, "run", VARIANT)
     prepare(case, fixed_walls)
-    with open(os.path.join(case, "log.foamRun"), "w") as log:
-        subprocess.run(["foamRun"], cwd=case, stdout=log,
-                       stderr=subprocess.STDOUT, check=True)
+    fc.run(case, ["foamRun"], "log.foamRun")
     log = fc.read_text(os.path.join(case, "log.foamRun"))
     if "\nEnd" not in log:
         fail("foamRun did not finish, see " + case)
