@@ -27,7 +27,8 @@ SPDX-License-Identifier: GPL-3.0-or-later
 from .errors import FoamError, CommandFailed
 from .platforms import (PLATFORMS, SPIN, LIBRARY, Platform, find_library,
                         library_search_path, ldd, environment_library)
-from .dictionaries import (NUMBER, read_text, write_text, strip_header,
+from .dictionaries import (NUMBER, read_text, write_text, replace_in_file,
+                           strip_header,
                            foam_header, write_vectors, dict_entry, set_entry)
 from .fields import read_field, internal_field, patch_values
 from .mesh import MeshGeometry

@@ -18,8 +18,8 @@ import shutil
 
 import numpy as np
 
-from .dictionaries import (dict_entry, foam_header, read_text, set_entry,
-                           write_text, write_vectors)
+from .dictionaries import (dict_entry, foam_header, read_text, replace_in_file,
+                           set_entry, write_text, write_vectors)
 from .errors import FoamError
 from .lagrangian import cloud_dirs, cloud_parts, read_cloud
 from .logs import read_statistics, read_steps, statistics_path
@@ -202,12 +202,9 @@ boundaryField
 
     def set_integration(self, scheme):
         """The integration scheme of the parcel velocity."""
-        path = self.cloud_properties()
-        text, n = re.subn(r"(integrationSchemes\s*\{\s*U\s+)\w+;",
-                          r"\g<1>%s;" % scheme, read_text(path))
-        if n != 1:
-            raise FoamError("no integrationSchemes U entry in " + path)
-        write_text(path, text)
+        replace_in_file(self.cloud_properties(),
+                        r"(integrationSchemes\s*\{\s*U\s+)\w+;",
+                        r"\g<1>%s;" % scheme)
 
     def set_subdomains(self, nprocs):
         """Split the case into nprocs slabs along x (simple)."""

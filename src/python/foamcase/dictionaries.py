@@ -21,6 +21,17 @@ def write_text(path, text):
         f.write(text)
 
 
+def replace_in_file(path, pattern, replacement, count=1, flags=re.M):
+    """Replace the regular expression pattern in a file, exactly count
+    times; any other number of matches is a FoamError (the file is not the
+    one the caller was written for)."""
+    text, n = re.subn(pattern, replacement, read_text(path), flags=flags)
+    if n != count:
+        raise FoamError("%s: %d matches of %r instead of %d"
+                        % (path, n, pattern, count))
+    write_text(path, text)
+
+
 def strip_header(text):
     """The text after the FoamFile header, comments removed."""
     start = text.index("}", text.index("FoamFile")) + 1 \

@@ -173,12 +173,11 @@ def tutorial_path():
 def edit(path, pattern, replacement, count=1, flags=re.M):
     """Replace pattern in a file of the copied tutorial exactly count times;
     anything else means the tutorial is not the one this test knows."""
-    text, n = re.subn(pattern, replacement, fc.read_text(path), flags=flags)
-    if n != count:
-        raise t.TestFailure(
-            "%s: %d matches of %r instead of %d: the tutorial differs from "
-            "the one this test was written for" % (path, n, pattern, count))
-    fc.write_text(path, text)
+    try:
+        fc.replace_in_file(path, pattern, replacement, count, flags)
+    except fc.FoamError as e:
+        raise t.TestFailure("%s: the tutorial differs from the one this test "
+                            "was written for" % e)
 
 
 def prepare_stage(stage, end_time, walls_to_us=True):

@@ -286,15 +286,6 @@ boundary
 """
 
 
-def edit(path, pattern, replacement, count=1):
-    """Replace pattern in a file, exactly count times."""
-    text, n = re.subn(pattern, replacement, fc.read_text(path), flags=re.M)
-    if n != count:
-        raise t.TestFailure("%s: %r found %d times, expected %d"
-                            % (path, pattern, n, count))
-    fc.write_text(path, text)
-
-
 def patch_faces(poly_mesh):
     """{patch: (startFace, nFaces)} of a polyMesh boundary file."""
     body = fc.strip_header(fc.read_text(os.path.join(poly_mesh, "boundary")))
@@ -352,12 +343,12 @@ def shear_case(platform, path, model):
                   fc.foam_header("dictionary", "blockMeshDict", "system")
                   + BLOCK_MESH)
     properties = case.cloud_properties()
-    edit(properties, r"^(\s*rho0\s+)[^;]*;", r"\g<1>%r;" % RHO_P)
+    fc.replace_in_file(properties, r"^(\s*rho0\s+)[^;]*;", r"\g<1>%r;" % RHO_P)
     # cellPoint: exact for the linear carrier (cell would give the cell
     # centre's velocity); curlUcDt is the vorticity field of OpenFOAM's
     # lift forces
-    edit(properties, r"^(\s*U\s+)cell;", r"\g<1>cellPoint;\n"
-         r"        curlUcDt        cellPoint;")
+    fc.replace_in_file(properties, r"^(\s*U\s+)cell;",
+                       r"\g<1>cellPoint;\n        curlUcDt        cellPoint;")
     s.mesh(case, 1, write_shear_carrier)
     return case
 
