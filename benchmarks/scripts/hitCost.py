@@ -298,7 +298,6 @@ def compare(args):
 
 
 def compare_table(rows, rounds=None):
-    load = open("/proc/loadavg").read().split()[0]
     lines = ["Side by side, the core before and after (the same benchmark "
              "sources, the two builds alternated%s; alpha ~ U(0, 90 deg), "
              "3-D; median CPU time per hit of the rounds (range), and "
