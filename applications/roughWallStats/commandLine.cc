@@ -3,6 +3,7 @@
 
 #include "commandLine.hh"
 #include "profileRoughness.hpp"
+#include "rollingSphereEnvelope.hpp"
 #include "roughWallLimits.hpp"
 
 #include <cerrno>
@@ -44,6 +45,18 @@ Model (defaults: glass beads on steel, the paper's d_p = 110 um case):
   --diameter D     particle diameter [m]; Delta = atan(2 pi Rq / max(L, D)),
                    Rq from Ra or Rz as for a sinusoid if not given
                    (docs/roughWallInteraction.md; Delta printed on stderr)
+Delta(d) of the wall itself (a table, no restitution statistics):
+  --d LIST         particle diameters [m] > 0: a,b,c and/or start:step:stop;
+                   prints Delta(d) = rms tilt of the rolling-sphere envelope,
+                   its mean, sd, skewness, excess kurtosis, and the estimate
+                   atan(2 pi Rq / max(RSm, d)) beside it, for either
+  --profile FILE   a measured trace: two columns x z [m] (or '# units XU ZU'),
+                   levelled by its least-squares line; Rq and RSm (zero
+                   up-crossings) measured on it, or
+  --Rq/--Ra/--Rz H and --RSm L: a synthetic Gaussian profile with that rms
+                   height and Rice width (Rq = sqrt(pi/2) Ra, Rq = Rz/4.11:
+                   Gaussian, Rz over sampling lengths of 5 RSm); --seed S
+                   (1) and --length N (5000: length in RSm, 10 .. 1e6)
   --e E            normal restitution of a facet, 0 <= E <= 1      (0.8)
   --mu0 M          static friction, M >= 0                         (0.4)
   --mud M          dynamic friction, 0 <= M <= mu0                 (0.4)
@@ -199,6 +212,60 @@ std::vector<double> angleList(const std::string& text)
     return angles;
 }
 
+//- Diameters [m] > 0: numbers and start:step:stop ranges
+std::vector<double> diameterList(const std::string& text)
+{
+    const std::string option = "--d";
+    std::vector<double> ds;
+    for (const std::string& item : split(text, ','))
+    {
+        const std::vector<std::string> range = split(item, ':');
+        if (range.size() == 1)
+        {
+            ds.push_back(number(option, item));
+        }
+        else if (range.size() == 3)
+        {
+            const double start = number(option, range[0]);
+            const double step = number(option, range[1]);
+            const double stop = number(option, range[2]);
+            if (!(step > 0) || stop < start)
+            {
+                fail(option + " range " + quoted(item)
+                     + " must be start:step:stop with step > 0 and stop >= start");
+            }
+            const double count = std::floor((stop - start)/step*(1 + 1e-12)) + 1;
+            if (count > 10000)
+            {
+                fail(option + " range " + quoted(item) + " has more than 10000 diameters");
+            }
+            for (long long i = 0; i < static_cast<long long>(count); ++i)
+            {
+                ds.push_back(std::min(stop, start + i*step));
+            }
+        }
+        else
+        {
+            fail(option + " needs numbers or start:step:stop ranges separated by commas, got "
+                 + quoted(item));
+        }
+    }
+    for (const double d : ds)
+    {
+        if (!(d > 0))
+        {
+            std::ostringstream message;
+            message << "--d values must be particle diameters > 0 [m], got " << d;
+            fail(message.str());
+        }
+    }
+    if (ds.empty())
+    {
+        fail("--d needs at least one diameter");
+    }
+    return ds;
+}
+
 } // namespace
 
 Options parseCommandLine(int argc, const char* const argv[])
@@ -209,7 +276,7 @@ Options parseCommandLine(int argc, const char* const argv[])
         "--Delta", "--e", "--mu0", "--mud", "--spin", "--alpha", "--method",
         "--samples", "--seed", "--max-collisions", "--tolerance", "--threads",
         "--pdf", "--bins", "--range", "--plot", "--output", "--digits",
-        "--Ra", "--Rq", "--Rz", "--RSm", "--diameter"
+        "--Ra", "--Rq", "--Rz", "--RSm", "--diameter", "--d", "--profile", "--length"
     };
     static const std::set<std::string> flags{"--recollide", "--lateral", "--help", "-h"};
 
@@ -272,6 +339,115 @@ Options parseCommandLine(int argc, const char* const argv[])
                + "] degrees (the roughness sd; beyond that too many facets are overhangs), got "
                + given["--Delta"]);
         }
+    }
+
+    // The Delta(d) table of the wall's profile
+    if (has("--d") || has("--profile") || has("--length"))
+    {
+        if (!has("--d"))
+        {
+            fail(std::string(has("--profile") ? "--profile" : "--length")
+               + " needs --d LIST (the particle diameters of the Delta(d) table)");
+        }
+        for (const char* other :
+             {"--Delta", "--diameter", "--e", "--mu0", "--mud", "--spin", "--alpha",
+              "--method", "--samples", "--max-collisions", "--tolerance", "--threads",
+              "--pdf", "--bins", "--range", "--recollide", "--lateral"})
+        {
+            if (has(other))
+            {
+                fail(std::string(other) + " has no meaning with --d (the Delta(d) table of "
+                     "the wall's profile, no restitution statistics)");
+            }
+        }
+        o.envelope = true;
+        EnvelopeSettings& e = o.envelopeSettings;
+        e.diameters = diameterList(given["--d"]);
+        if (has("--profile"))
+        {
+            for (const char* other : {"--Ra", "--Rq", "--Rz", "--RSm", "--length", "--seed"})
+            {
+                if (has(other))
+                {
+                    fail(std::string(other) + " is for the synthetic profile: give either "
+                         "--profile FILE or --Rq/--Ra/--Rz and --RSm");
+                }
+            }
+            e.profileFile = given["--profile"];
+            if (e.profileFile.empty())
+            {
+                fail("--profile needs a file name");
+            }
+        }
+        else
+        {
+            roughWall::ProfileRoughness p;
+            if (has("--Ra")) p.Ra = number("--Ra", given["--Ra"]);
+            if (has("--Rq")) p.Rq = number("--Rq", given["--Rq"]);
+            if (has("--Rz")) p.Rz = number("--Rz", given["--Rz"]);
+            if (has("--RSm")) p.RSm = number("--RSm", given["--RSm"]);
+            const roughWall::ProfileRoughnessError error =
+                roughWall::checkProfileRoughness(p, has("--Ra"), has("--Rq"), has("--Rz"));
+            if (!error.keyword.empty())
+            {
+                fail("--" + error.keyword + " must be " + error.allowed
+                   + (has(("--" + error.keyword).c_str())
+                      ? ", got " + given["--" + error.keyword] : ", missing")
+                   + " (or --profile FILE)");
+            }
+            // The synthetic profile is Gaussian: its conversions, not the
+            // sinusoid's of equation (1)
+            e.Rq = p.Rq > 0 ? p.Rq
+                 : p.Ra > 0 ? roughWall::rqPerRaGaussian*p.Ra
+                 : p.Rz/roughWall::rzPerRqGaussian;
+            e.RSm = p.RSm;
+            if (p.Rq <= 0)
+            {
+                std::ostringstream note;
+                note.precision(6);
+                note << "Rq = " << e.Rq << " m from "
+                     << (p.Ra > 0 ? "Ra as for a Gaussian profile (Rq = sqrt(pi/2) Ra)"
+                                  : "Rz as for a Gaussian profile with Rz over sampling "
+                                    "lengths of 5 RSm (Rq = Rz/4.11)");
+                o.notes.push_back(note.str());
+            }
+            if (has("--length"))
+            {
+                e.lengthPerRSm = number("--length", given["--length"]);
+                if (!(e.lengthPerRSm >= 10 && e.lengthPerRSm <= 1e6))
+                {
+                    fail("--length must be the synthetic profile's length in RSm, in [10, 1e6], "
+                         "got " + given["--length"]);
+                }
+            }
+            if (has("--seed"))
+            {
+                const std::string& text = given["--seed"];
+                char* end = nullptr;
+                errno = 0;
+                const unsigned long long seed = std::strtoull(text.c_str(), &end, 10);
+                if (text.empty() || text[0] == '-' || end != text.c_str() + text.size()
+                 || errno == ERANGE)
+                {
+                    fail("--seed must be an integer in [0, 2^64 - 1], got " + quoted(text));
+                }
+                e.seed = seed;
+            }
+        }
+        if (has("--digits"))
+        {
+            o.digits = static_cast<int>(integer("--digits", given["--digits"], 1, 17));
+        }
+        if (has("--plot")) o.plotFile = given["--plot"];
+        if (has("--output")) o.outputFile = given["--output"];
+        for (const auto* option : {"--plot", "--output"})
+        {
+            if (has(option) && given[option].empty())
+            {
+                fail(std::string(option) + " needs a file name");
+            }
+        }
+        return o;
     }
 
     // Or Delta from the wall's profile parameters and the particle diameter

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "model.hh"
+#include "profileStatistics.hh"
 #include "monteCarloStatistics.hh"
 #include "quadratureStatistics.hh"
 
@@ -44,6 +45,10 @@ struct Options
     int digits = 12;              //!< significant digits of the numbers in the CSV
     int threads = 0;              //!< 0: one per core
     bool help = false;
+
+    bool envelope = false;        //!< --d: the Delta(d) table of the wall's profile
+    EnvelopeSettings envelopeSettings;
+    std::string plotLabel;        //!< --plot label of the Delta(d) figure
 
     std::vector<std::string> notes;   //!< remarks for stderr (options that do nothing)
 };

@@ -11,6 +11,10 @@
       [--quantity kn|kt|kOmega ...] [--alpha A ...]
       the change-of-variables density (2.8) against the Monte Carlo histogram
       (the paper's figure 3), one panel per table.
+  plotRoughWallStats.py delta A.csv [B.csv ...] --output fig.png [--labels ...]
+      Delta(d) of the rolling-sphere envelope against d_p/RSm (log axis),
+      with the closed-form estimate atan(2 pi Rq / max(RSm, d_p)) dashed,
+      and the tilt's excess kurtosis and skewness below.
 """
 import argparse
 import sys
@@ -108,10 +112,38 @@ def plot_pdf(tables, labels, quantities, alphas, output):
     fig.savefig(output, dpi=130)
 
 
+def plot_delta(tables, labels, output):
+    fig, (ax, ax_shape) = plt.subplots(2, 1, figsize=(7, 7.2), sharex=True,
+                                       gridspec_kw={"height_ratios": [2.2, 1]})
+    for i, (data, label) in enumerate(zip(tables, labels)):
+        colour = "C%d" % i
+        x = data["d_over_RSm"]
+        ax.plot(x, data["Delta_deg"], "o-", color=colour, ms=3.5, lw=1.6,
+                label=label + ": envelope")
+        ax.plot(x, data["closed_form_deg"], "--", color=colour, lw=1.2,
+                label=label + r": atan(2$\pi$ Rq / max(RSm, $d_p$))")
+        ax_shape.plot(x, data["excess_kurtosis"], "o-", color=colour, ms=3, lw=1.2,
+                      label=label + ": excess kurtosis")
+        ax_shape.plot(x, data["skewness"], "s:", color=colour, ms=3, lw=1,
+                      label=label + ": skewness")
+    ax.set_xscale("log")
+    ax.set_ylabel(r"$\Delta(d_p)$ = rms tilt [deg]")
+    ax.set_ylim(bottom=0)
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8)
+    ax_shape.axhline(0, color="0.4", lw=0.8)
+    ax_shape.set_xlabel(r"$d_p$ / RSm")
+    ax_shape.set_ylabel("shape of the tilt")
+    ax_shape.grid(alpha=0.3, which="both")
+    ax_shape.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(output, dpi=130)
+
+
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("kind", choices=["stats", "pdf"])
+    parser.add_argument("kind", choices=["stats", "pdf", "delta"])
     parser.add_argument("tables", nargs="+", help="CSV files written by roughWallStats")
     parser.add_argument("--output", required=True, help="figure file (.png, .pdf, .svg)")
     parser.add_argument("--labels", nargs="+", help="one label per table")
@@ -125,6 +157,8 @@ def main(argv):
     labels = per_table(args.labels, len(tables), lambda i: args.tables[i])
     if args.kind == "stats":
         plot_stats(tables, labels, args.output, args.kn_max)
+    elif args.kind == "delta":
+        plot_delta(tables, labels, args.output)
     else:
         quantities = per_table(args.quantity, len(tables), lambda i: "k")
         alphas = per_table(args.alpha, len(tables), lambda i: "")

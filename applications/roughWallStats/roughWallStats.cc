@@ -10,6 +10,8 @@
 #include "commandLine.hh"
 #include "coefficientDistribution.hh"
 #include "monteCarloStatistics.hh"
+#include "profileFile.hpp"
+#include "profileStatistics.hh"
 #include "quadratureStatistics.hh"
 #include "tables.hh"
 
@@ -75,7 +77,7 @@ bool plot(const std::string& kind, const std::string& csv, const Options& o)
 {
     const std::string python = "/usr/bin/python3";
     const std::string script = plotScript();
-    const std::string label = modelLabel(o);
+    const std::string label = kind == "delta" ? o.plotLabel : modelLabel(o);
     std::vector<std::string> args{python, script, kind, csv, "--output", o.plotFile, "--labels", label};
     if (kind == "pdf")
     {
@@ -207,6 +209,32 @@ int runStatistics(const Options& o)
     return writeAndPlot(o, "stats", [&](std::ostream& os) { writeStatisticsTable(os, rows, layout); });
 }
 
+//- The Delta(d) table of the wall's profile (--d)
+int runEnvelope(const Options& options)
+{
+    Options o = options;
+    EnvelopeResult result;
+    try
+    {
+        result = envelopeStatistics(o.envelopeSettings);
+    }
+    catch (const roughWall::ProfileFileError& error)
+    {
+        std::cerr << "roughWallStats: error: --profile " << error.what() << '\n';
+        return usageExitCode;
+    }
+    std::cerr << "roughWallStats: " << result.description << '\n';
+    std::ostringstream label;
+    label.precision(4);
+    label << (o.envelopeSettings.profileFile.empty() ? "synthetic Gaussian, " : "profile, ")
+          << "Rq = " << result.Rq*1e6 << " um, RSm = " << result.RSm*1e6 << " um";
+    o.plotLabel = label.str();
+    return writeAndPlot(o, "delta", [&](std::ostream& os)
+    {
+        writeEnvelopeTable(os, result, o.digits);
+    });
+}
+
 int runPdf(const Options& o)
 {
     const Incidence incidence = Incidence::fromDegrees(o.alphaDeg[0]);
@@ -321,6 +349,10 @@ int main(int argc, char* argv[])
     }
     try
     {
+        if (options.envelope)
+        {
+            return runEnvelope(options);
+        }
         return options.pdf ? runPdf(options) : runStatistics(options);
     }
     catch (const std::exception& error)

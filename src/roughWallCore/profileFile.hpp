@@ -183,7 +183,7 @@ inline SampledProfile readProfile
         if (!p.x.empty() && !(x > p.x.back()))
         {
             std::ostringstream what;
-            what.precision(17);
+            what.precision(12);
             what << "x = " << x << " m is not above the previous x = "
                  << p.x.back() << " m (x must increase strictly)";
             throw ProfileFileError(name, lineNo, what.str());

@@ -454,6 +454,63 @@ inline TiltStatistics tiltStatistics(const SampledProfile& p, const double d)
 }
 
 
+//- The profile levelled as ISO 4287's mean line does for a straight form:
+//  the least-squares line removed (trimmed ends; a residual slope would
+//  add a mean tilt), or the mean (periodic)
+inline SampledProfile levelledProfile(const SampledProfile& p)
+{
+    checkProfile(p);
+    SampledProfile q = p;
+    const double n = static_cast<double>(p.x.size());
+    double mx = 0, mz = 0;
+    for (std::size_t i = 0; i < p.x.size(); ++i) { mx += p.x[i]; mz += p.z[i]; }
+    mx /= n;
+    mz /= n;
+    double sxx = 0, sxz = 0;
+    for (std::size_t i = 0; i < p.x.size(); ++i)
+    {
+        sxx += (p.x[i] - mx)*(p.x[i] - mx);
+        sxz += (p.x[i] - mx)*(p.z[i] - mz);
+    }
+    const double slope = p.ends == ProfileEnds::trimmed ? sxz/sxx : 0;
+    for (std::size_t i = 0; i < q.x.size(); ++i)
+    {
+        q.z[i] -= mz + slope*(p.x[i] - mx);
+    }
+    return q;
+}
+
+
+//- Rq and the Rice mean element width of a levelled profile: the rms of z
+//  over the points, and the length per zero up-crossing (ISO 4287's RSm
+//  without its height and width discrimination)
+struct ProfileParameters
+{
+    double Rq = 0;
+    double RSm = 0;             //!< 0 if z never crosses zero upwards
+    std::size_t upCrossings = 0;
+    double length = 0;
+};
+
+inline ProfileParameters profileParameters(const SampledProfile& p)
+{
+    checkProfile(p);
+    ProfileParameters r;
+    double q = 0;
+    for (const double z : p.z) q += z*z;
+    r.Rq = std::sqrt(q/p.z.size());
+    const std::size_t n = p.z.size();
+    const bool periodic = p.ends == ProfileEnds::periodic;
+    for (std::size_t i = 0; i + 1 < n + (periodic ? 1 : 0); ++i)
+    {
+        r.upCrossings += p.z[i] < 0 && p.z[(i + 1) % n] >= 0;
+    }
+    r.length = periodic ? p.period : p.x.back() - p.x.front();
+    r.RSm = r.upCrossings > 0 ? r.length/r.upCrossings : 0;
+    return r;
+}
+
+
 //- Rq from Ra for a Gaussian profile: E|z| = sqrt(2/pi) Rq, exact
 constexpr double rqPerRaGaussian = 1.2533141373155003;   // sqrt(pi/2)
 

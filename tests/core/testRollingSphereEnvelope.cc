@@ -384,9 +384,10 @@ TEST(roughnessProfile, StatisticsWeighByCell)
 
 // The synthetic Gaussian profile: Rq exactly; the rms slope (differences of
 // the samples) 2 pi Rq/RSm and the zero up-crossings one per RSm (Rice),
-// both counted here; Ra/Rq = sqrt(2/pi). Statistical tolerances: on 8 seeds
-// of the default 5000 RSm the relative spread (sd) of the rms slope is about
-// 0.3 %, of the up-crossing rate 0.2 %: 1.5 % and 1 % are 5 sd.
+// both counted here; Ra/Rq = sqrt(2/pi). Statistical tolerances: on seeds
+// 1..8 of the default 5000 RSm the relative spread (sd) was measured as
+// 0.63 % (rms slope), 0.60 % (length per up-crossing), 0.17 % (Ra/Rq):
+// 2 %, 2 % and 0.5 % are 3 sd (fixed seeds: deterministic).
 TEST(roughnessProfile, SyntheticProfileHasRiceWidthAndSlope)
 {
     for (const std::uint64_t seed : {1u, 2u, 3u})
@@ -414,9 +415,9 @@ TEST(roughnessProfile, SyntheticProfileHasRiceWidthAndSlope)
         }
         EXPECT_NEAR(mean/n, 0, 1e-12*2e-6);
         EXPECT_NEAR(std::sqrt(q/n), 2e-6, 1e-12*2e-6);
-        EXPECT_NEAR(std::sqrt(s2/n)/(2*piTyped*2e-6/60e-6), 1, 0.015) << "seed " << seed;
-        EXPECT_NEAR(p.period/up/60e-6, 1, 0.01) << "seed " << seed;
-        EXPECT_NEAR(absSum/n/2e-6, std::sqrt(2/piTyped), 0.01) << "seed " << seed;
+        EXPECT_NEAR(std::sqrt(s2/n)/(2*piTyped*2e-6/60e-6), 1, 0.02) << "seed " << seed;
+        EXPECT_NEAR(p.period/up/60e-6, 1, 0.02) << "seed " << seed;
+        EXPECT_NEAR(absSum/n/2e-6/std::sqrt(2/piTyped), 1, 0.005) << "seed " << seed;
         EXPECT_NEAR(rqPerRaGaussian, std::sqrt(piTyped/2), 1e-15);
     }
 }
@@ -549,4 +550,32 @@ TEST(roughnessProfile, ProfileFileFormatsAndErrors)
     // The default minimum
     EXPECT_NE(messageOf([] { std::istringstream in("0 1\n1 2\n"); readProfile(in, "f"); })
                   .find("at least 10 needed"), std::string::npos);
+}
+
+
+// Levelling removes a least-squares line (trimmed) or the mean (periodic);
+// a sinusoid of wavelength L has RSm = L and Rq = A/sqrt 2 (by hand)
+TEST(roughnessProfile, LevellingAndProfileParameters)
+{
+    SampledProfile p = sinusoid(2e-6, 100e-6, 1000);
+    p.ends = ProfileEnds::trimmed;
+    SampledProfile tilted = p;
+    for (std::size_t i = 0; i < p.x.size(); ++i)
+    {
+        tilted.z[i] += 5e-6 + 0.01*p.x[i];
+    }
+    const SampledProfile level = levelledProfile(tilted);
+    // Least squares of sin over 0 .. L(1 - 1/n) leaves a small line of its
+    // own: compare with the sinusoid levelled alone
+    const SampledProfile reference = levelledProfile(p);
+    for (std::size_t i = 0; i < p.x.size(); ++i)
+    {
+        ASSERT_NEAR(level.z[i], reference.z[i], 1e-15);
+    }
+    SampledProfile periodic = sinusoid(2e-6, 100e-6, 1000);
+    for (double& z : periodic.z) z += 3e-6;
+    const ProfileParameters q = profileParameters(levelledProfile(periodic));
+    EXPECT_NEAR(q.Rq, 2e-6/std::sqrt(2.0), 1e-15);
+    EXPECT_EQ(q.upCrossings, 1u);
+    EXPECT_NEAR(q.RSm, 100e-6, 1e-18);
 }
