@@ -74,8 +74,8 @@
 // (its autocorrelation is exp(-tau^2/(2 l^2))), truncated at 6 l/sqrt(2)
 // (the kernel is below 1.6e-8 of its peak there), on a periodic grid of
 // spacing l/16 (the polyline's chord slopes then have the variance of the
-// slope to 1 - (dx/l)^2/12 = 1 - 3e-4); mean removed and scaled so that the sampled rms height is
-// exactly Rq. Default length 5000 RSm (N = 5000*2 pi*16 = 502655 points).
+// slope to 1 - (dx/l)^2/12 = 1 - 3e-4); mean removed and scaled so that
+// the sampled rms height is exactly Rq. Default length 5000 RSm (N = 5000*2 pi*16 = 502655 points).
 // Ra and Rz: for a Gaussian profile Rq = sqrt(pi/2) Ra exactly
 // (E|z| = sqrt(2/pi) Rq); Rz has no distribution-free relation to Rq (the
 // mean peak-to-valley height grows with the sampling length): assumed
