@@ -45,18 +45,6 @@ Model (defaults: glass beads on steel, the paper's d_p = 110 um case):
   --diameter D     particle diameter [m]; Delta = atan(2 pi Rq / max(L, D)),
                    Rq from Ra or Rz as for a sinusoid if not given
                    (docs/roughWallInteraction.md; Delta printed on stderr)
-Delta(d) of the wall itself (a table, no restitution statistics):
-  --d LIST         particle diameters [m] > 0: a,b,c and/or start:step:stop;
-                   prints Delta(d) = rms tilt of the rolling-sphere envelope,
-                   its mean, sd, skewness, excess kurtosis, and the estimate
-                   atan(2 pi Rq / max(RSm, d)) beside it, for either
-  --profile FILE   a measured trace: two columns x z [m] (or '# units XU ZU'),
-                   levelled by its least-squares line; Rq and RSm (zero
-                   up-crossings) measured on it, or
-  --Rq/--Ra/--Rz H and --RSm L: a synthetic Gaussian profile with that rms
-                   height and Rice width (Rq = sqrt(pi/2) Ra, Rq = Rz/4.11:
-                   Gaussian, Rz over sampling lengths of 5 RSm); --seed S
-                   (1) and --length N (5000: length in RSm, 10 .. 1e6)
   --e E            normal restitution of a facet, 0 <= E <= 1      (0.8)
   --mu0 M          static friction, M >= 0                         (0.4)
   --mud M          dynamic friction, 0 <= M <= mu0                 (0.4)
@@ -89,8 +77,21 @@ Output:
   --digits N       significant digits of the numbers, 1 .. 17      (12)
                    (17: exact, every double reads back unchanged)
   --plot FILE      draw it (means +-1 sd against alpha, or pdf against
-                   histogram) with matplotlib; FILE.png, .pdf or .svg
+                   histogram, or with --d Delta against d/RSm) with
+                   matplotlib; FILE.png, .pdf or .svg
   --help           this text
+Delta(d) of the wall itself (a table, no restitution statistics):
+  --d LIST         particle diameters [m] > 0: a,b,c and/or start:step:stop;
+                   prints Delta(d) = rms tilt of the rolling-sphere envelope,
+                   its mean, sd, skewness, excess kurtosis, and the estimate
+                   atan(2 pi Rq / max(RSm, d)) beside it, for either
+  --profile FILE   a measured trace: two columns x z [m] (or '# units XU ZU'),
+                   levelled by its least-squares line; Rq and RSm (zero
+                   up-crossings) measured on it, or
+  --Rq/--Ra/--Rz H and --RSm L: a synthetic Gaussian profile with that rms
+                   height and Rice width (Rq = sqrt(pi/2) Ra, Rq = Rz/4.11:
+                   Gaussian, Rz over sampling lengths of 5 RSm); --seed S
+                   (1) and --length N (5000: length in RSm, 10 .. 1e6)
 Documentation: docs/roughWallStats.md
 )";
 }
