@@ -17,6 +17,8 @@
 // deposition and has nothing to do with them.
 #pragma once
 
+#include "roughWallBase.hpp"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -25,8 +27,6 @@
 
 namespace roughWall
 {
-
-using Vec3 = Eigen::Vector3d;
 
 //- Facet material: normal restitution and friction coefficients
 struct FacetMaterial

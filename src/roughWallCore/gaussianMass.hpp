@@ -6,6 +6,8 @@
 // intervals by Gauss-Legendre quadrature (no cancellation), tails by erfc.
 #pragma once
 
+#include "roughWallBase.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -13,7 +15,6 @@
 namespace roughWall
 {
 
-constexpr double pi = 3.14159265358979323846;
 constexpr double sqrt2 = 1.41421356237309504880;
 constexpr double invSqrt2Pi = 0.39894228040143267794;
 

@@ -6,6 +6,8 @@
 // the documentation.
 #pragma once
 
+#include "roughWallBase.hpp"
+
 namespace roughWall
 {
 namespace limits
@@ -35,13 +37,13 @@ constexpr double maxProfileSlope = 1;
 //- Degrees to radians, for the settings given in degrees
 constexpr double degToRad(const double deg)
 {
-    return deg*(3.14159265358979323846/180.0);
+    return deg*(pi/180.0);
 }
 
 //- Radians to degrees, for the statistics reported in degrees
 constexpr double radToDeg(const double rad)
 {
-    return rad*(180.0/3.14159265358979323846);
+    return rad*(180.0/pi);
 }
 
 } // End namespace limits

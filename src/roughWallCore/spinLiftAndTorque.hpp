@@ -38,6 +38,8 @@
 // huge (finite): no 0*inf, no 0/0, no NaN (tests/core/testParticleSpin.cc).
 #pragma once
 
+#include "roughWallBase.hpp"
+
 #include <Eigen/Dense>
 
 #include <cmath>
@@ -46,12 +48,8 @@
 namespace roughWall
 {
 
-using Vec3 = Eigen::Vector3d;
-
 namespace spin
 {
-
-constexpr double pi = 3.14159265358979323846;
 
 //- Rotational-lift coefficient C_LR (a named choice, see above)
 enum class LiftCoefficient

@@ -20,6 +20,8 @@
 // 1.2e-9 too large).
 #pragma once
 
+#include "roughWallBase.hpp"
+
 #include <array>
 #include <cmath>
 
@@ -47,7 +49,7 @@ struct NormalZiggurat
     //- Area of each layer for a tail starting at r
     static double layerArea(double r)
     {
-        return r*f(r) + std::sqrt(0.5*3.14159265358979323846)*std::erfc(r/std::sqrt(2.0));
+        return r*f(r) + std::sqrt(0.5*pi)*std::erfc(r/std::sqrt(2.0));
     }
 
     //- Build the layers down from r; returns the excess of the top layer's

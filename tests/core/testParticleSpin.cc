@@ -15,6 +15,7 @@
 
 using namespace roughWall::spin;
 using roughWall::Vec3;
+using roughWall::pi;
 
 namespace
 {

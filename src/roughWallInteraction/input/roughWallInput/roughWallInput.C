@@ -78,49 +78,6 @@ Foam::string boundText(const Foam::scalar x)
     return os.str();
 }
 
-//- The single number token of entry keyword, or a fatal error
-Foam::scalar numberToken
-(
-    const Foam::dictionary& dict,
-    const Foam::word& keyword,
-    const Foam::string& allowed,
-    const char* meaning
-)
-{
-    using namespace Foam;
-
-    const entry* eptr = roughWallCompat::findLiteral(dict, keyword);
-
-    if (!eptr)
-    {
-        roughWallInput::fatalBadEntry
-        (
-            dict, keyword, allowed, meaning, "missing"
-        );
-    }
-
-    if (eptr->isDict())
-    {
-        roughWallInput::fatalBadEntry
-        (
-            dict, keyword, allowed, meaning, "a dictionary"
-        );
-    }
-
-    const ITstream& is = eptr->stream();
-
-    if (is.size() != 1 || !is[0].isNumber())
-    {
-        roughWallInput::fatalBadEntry
-        (
-            dict, keyword, allowed, meaning,
-            "'" + roughWallInput::entryText(dict, keyword) + "'"
-        );
-    }
-
-    return is[0].number();
-}
-
 } // End anonymous namespace
 
 
@@ -231,14 +188,15 @@ Foam::string Foam::roughWallInput::entryText
 }
 
 
-void Foam::roughWallInput::checkRange
+Foam::scalar Foam::roughWallInput::readScalar
 (
     const dictionary& dict,
     const word& keyword,
-    const range& r,
-    const scalar value
+    const range& r
 )
 {
+    const scalar value = read<scalar>(dict, keyword, r.allowed(), r.meaning);
+
     // Written so that NaN fails too
     if (!(value >= r.min && value <= r.max))
     {
@@ -248,18 +206,6 @@ void Foam::roughWallInput::checkRange
             "'" + entryText(dict, keyword) + "'"
         );
     }
-}
-
-
-Foam::scalar Foam::roughWallInput::readScalar
-(
-    const dictionary& dict,
-    const word& keyword,
-    const range& r
-)
-{
-    const scalar value = numberToken(dict, keyword, r.allowed(), r.meaning);
-    checkRange(dict, keyword, r, value);
     return value;
 }
 
@@ -272,11 +218,10 @@ Foam::scalar Foam::roughWallInput::readScalarOrDefault
     const scalar deflt
 )
 {
-    if (!roughWallCompat::findLiteral(dict, keyword))
-    {
-        return deflt;
-    }
-    return readScalar(dict, keyword, r);
+    return
+        roughWallCompat::findLiteral(dict, keyword)
+      ? readScalar(dict, keyword, r)
+      : deflt;
 }
 
 
@@ -296,19 +241,7 @@ Foam::label Foam::roughWallInput::readLabelOrDefault
     const string allowed =
         "an integer in [" + boundText(r.min) + ", " + boundText(r.max) + "]";
 
-    const entry& e = *roughWallCompat::findLiteral(dict, keyword);
-
-    if (e.isDict() || e.stream().size() != 1 || !e.stream()[0].isLabel())
-    {
-        fatalBadEntry
-        (
-            dict, keyword, allowed, r.meaning,
-            "'" + entryText(dict, keyword) + "'"
-        );
-    }
-    const ITstream& is = e.stream();
-
-    const label value = is[0].labelToken();
+    const label value = read<label>(dict, keyword, allowed, r.meaning);
     if (value < r.min || value > r.max)
     {
         fatalBadEntry
@@ -329,35 +262,10 @@ bool Foam::roughWallInput::readSwitchOrDefault
     const bool deflt
 )
 {
-    if (!roughWallCompat::findLiteral(dict, keyword))
-    {
-        return deflt;
-    }
-
-    const char* allowed = "true/false, on/off, yes/no";
-
-    const entry& e = *roughWallCompat::findLiteral(dict, keyword);
-
-    if (e.isDict() || e.stream().size() != 1 || !e.stream()[0].isWord())
-    {
-        fatalBadEntry
-        (
-            dict, keyword, allowed, meaning,
-            "'" + entryText(dict, keyword) + "'"
-        );
-    }
-    const ITstream& is = e.stream();
-
-    const Switch sw(is[0].wordToken(), true);
-    if (!sw.valid())
-    {
-        fatalBadEntry
-        (
-            dict, keyword, allowed, meaning,
-            "'" + entryText(dict, keyword) + "'"
-        );
-    }
-    return bool(sw);
+    return
+        roughWallCompat::findLiteral(dict, keyword)
+      ? bool(read<Switch>(dict, keyword, "true/false, on/off, yes/no", meaning))
+      : deflt;
 }
 
 

@@ -176,8 +176,8 @@ void Foam::spinModelInput::fatalNoSpin
         << " of cloud " << cloudName.c_str() << " (type "
         << cloudType.c_str() << ") carry no spin." << nl
         << "    Select " << model.c_str() << " in a cloud whose parcels carry"
-        << " spin: type collidingCloud (OpenFOAM-11, -12, -13) or"
-        << " basicKinematicCollidingCloud (v1912:"
+        << " spin: type collidingCloud (openfoam.org releases) or"
+        << " basicKinematicCollidingCloud (ESI releases:"
         << " icoUncoupledKinematicParcelFoam, DPMFoam)," << nl
         << "    or remove it from " << dict.name().c_str()
         << exit(FatalIOError);

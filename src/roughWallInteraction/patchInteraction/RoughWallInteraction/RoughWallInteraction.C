@@ -44,7 +44,7 @@ void Foam::RoughWallInteraction<CloudType>::rebound
 (
     parcelType& p,
     const polyPatch& pp,
-    const roughWallPatchData& data
+    const roughWallPatchSettings& settings
 )
 {
     // standardWallInteraction's rebound, term for term
@@ -63,10 +63,10 @@ void Foam::RoughWallInteraction<CloudType>::rebound
 
     if (Un > 0)
     {
-        U -= (1.0 + data.e())*Un*nw;
+        U -= (1.0 + settings.e())*Un*nw;
     }
 
-    U -= data.mu()*Ut;
+    U -= settings.mu()*Ut;
 
     // Return velocity to global space
     U += Up;
@@ -78,7 +78,7 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
 (
     parcelType& p,
     const polyPatch& pp,
-    const roughWallPatchData& data
+    const roughWallPatchSettings& settings
 )
 {
     using roughWall::Vec3;
@@ -99,7 +99,7 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
     // components of n, v and (below) the spin exactly zero the core keeps
     // them zero: its facet normals, impulses and spin changes have no
     // empty component, so the rebound needs no projection
-    const label emptyCmpt = patches_.emptyComponent();
+    const label emptyCmpt = emptyComponent_;
     Vec3 emptyDirection(Vec3::Zero());
     if (emptyCmpt >= 0)
     {
@@ -152,7 +152,7 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
             omega,
             n,
             0.5*p.d(),
-            data.parameters(p.d()),
+            settings.parameters(p.d()),
             uniform01,
             emptyDirection
         );
@@ -200,8 +200,7 @@ template<class CloudType>
 void Foam::RoughWallInteraction<CloudType>::reportWallVelocity(Ostream& os)
 {
     scalarList speedSqr(wallSpeedSqr_);
-    Pstream::listCombineGather(speedSqr, maxEqOp<scalar>());
-    Pstream::listCombineScatter(speedSqr);
+    roughWallCompat::maxOverProcessors(speedSqr);
 
     forAll(speedSqr, patchi)
     {
@@ -214,7 +213,7 @@ void Foam::RoughWallInteraction<CloudType>::reportWallVelocity(Ostream& os)
         }
         wallSpeedSqrReported_[patchi] = speedSqr[patchi];
 
-        const word& name = patches_.name(patchi);
+        const word& name = stats_.patchName(patchi);
         const scalar speed = sqrt(speedSqr[patchi]);
 
         os  << "    Wall velocity (patchData) of patch " << name.c_str()
@@ -234,6 +233,39 @@ void Foam::RoughWallInteraction<CloudType>::reportWallVelocity(Ostream& os)
                 << " calculated)." << endl;
         }
     }
+}
+
+
+template<class CloudType>
+Foam::label Foam::RoughWallInteraction<CloudType>::findEmptyComponent
+(
+    const polyMesh& mesh
+)
+{
+    if (mesh.nSolutionD() == 3)
+    {
+        return -1;
+    }
+
+    const Vector<label>& solutionD = mesh.solutionD();
+
+    if (mesh.nSolutionD() == 2)
+    {
+        for (direction cmpt = 0; cmpt < vector::nComponents; ++cmpt)
+        {
+            if (solutionD[cmpt] == -1)
+            {
+                return cmpt;
+            }
+        }
+    }
+
+    FatalErrorInFunction
+        << "roughWallInteraction needs a 2-D or 3-D mesh; this mesh solves "
+        << mesh.nSolutionD() << " direction(s) (solutionD = " << solutionD
+        << ")." << exit(FatalError);
+
+    return -1;
 }
 
 
@@ -266,21 +298,44 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
 )
 :
     PatchInteractionModel<CloudType>(dict, cloud, typeName),
-    patches_(roughWallCompat::coeffs(*this), cloud.mesh()),
-    stats_(patches_.nNonProcessor()),
+    patches_
+    (
+        roughWallPatchSettings::readPatches
+        (
+            roughWallCompat::coeffs(*this),
+            roughWallCompat::boundary(cloud.mesh())
+        )
+    ),
+    emptyComponent_(-1),
+    stats_(roughWallCompat::boundary(cloud.mesh())),
     file_(),
-    wallSpeedSqr_(patches_.nNonProcessor(), scalar(-1)),
-    wallSpeedSqrReported_(patches_.nNonProcessor(), scalar(-1))
+    wallSpeedSqr_(stats_.nPatches(), scalar(-1)),
+    wallSpeedSqrReported_(stats_.nPatches(), scalar(-1))
 {
-    if (patches_.anyRough())
+    bool anyRough = false;
+    for (const roughWallPatchSettings& settings : patches_)
     {
+        anyRough = anyRough || settings.type() == interactionType::rough;
+    }
+
+    if (anyRough)
+    {
+        emptyComponent_ = findEmptyComponent(cloud.mesh());
+
+        if (emptyComponent_ >= 0)
+        {
+            Info<< "    2-D case: no lateral facet tilt, no velocity or spin "
+                << "out of the plane normal to "
+                << vector::componentNames[emptyComponent_] << nl;
+        }
+
         Info<< "    Rough-wall parcels carry spin: "
             << (withSpin ? "yes (angularMomentum)" : "no") << nl;
     }
 
     checkCoeffsKeywords();
 
-    // v1912's base class would write a file of its own when the
+    // ESI's base class would write a file of its own when the
     // coefficients say writeToFile: the statistics file replaces it
     if constexpr (roughWallCompat::esi)
     {
@@ -320,6 +375,7 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
 :
     PatchInteractionModel<CloudType>(pim),
     patches_(pim.patches_),
+    emptyComponent_(pim.emptyComponent_),
     stats_(pim.stats_),
     file_(),
     wallSpeedSqr_(pim.wallSpeedSqr_),
@@ -337,15 +393,9 @@ bool Foam::RoughWallInteraction<CloudType>::correct
     bool& keepParticle
 )
 {
-    const roughWallPatchData* data = patches_.find(pp.index());
+    const roughWallPatchSettings& settings = patches_[pp.index()];
 
-    // Coupled, empty and wedge patches: OpenFOAM's own handling
-    if (!data)
-    {
-        return false;
-    }
-
-    switch (data->type())
+    switch (settings.type())
     {
         case interactionType::none:
         {
@@ -371,14 +421,14 @@ bool Foam::RoughWallInteraction<CloudType>::correct
         {
             keepParticle = true;
             roughWallCompat::setMoving(p, true);
-            rebound(p, pp, *data);
+            rebound(p, pp, settings);
             return true;
         }
         case interactionType::rough:
         {
             keepParticle = true;
             roughWallCompat::setMoving(p, true);
-            roughRebound(p, pp, *data);
+            roughRebound(p, pp, settings);
             return true;
         }
     }
@@ -397,7 +447,8 @@ void Foam::RoughWallInteraction<CloudType>::info(ROUGHWALL_INFO_PARAMETERS)
     // last write time (restart)
     roughWallStatistics total(stats_.reduced());
     {
-        roughWallStatistics stored(stats_.nPatches());
+        roughWallStatistics stored(stats_);
+        stored.reset();
         const label nCounts = stored.counts().size();
         const label nSums = stored.sums().size();
 

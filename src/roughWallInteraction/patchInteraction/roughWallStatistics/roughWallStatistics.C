@@ -29,6 +29,7 @@ License
 
 #include "roughWallStatistics.H"
 #include "Pstream.H"
+#include "processorPolyPatch.H"
 #include "foamCompat.H"
 #include "Time.H"
 #include "OSspecific.H"
@@ -36,12 +37,28 @@ License
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::roughWallStatistics::roughWallStatistics(const label nPatches)
+Foam::roughWallStatistics::roughWallStatistics
+(
+    const polyBoundaryMesh& patches
+)
 :
-    nPatches_(nPatches),
-    counts_(nPatches*nCountTypes, Zero),
-    sums_(nPatches*nSumTypes, Zero)
-{}
+    patchNames_(patches.names()),
+    nPatches_(0),
+    counts_(),
+    sums_()
+{
+    while
+    (
+        nPatches_ < patches.size()
+     && !isA<processorPolyPatch>(patches[nPatches_])
+    )
+    {
+        ++nPatches_;
+    }
+    patchNames_.setSize(nPatches_);
+    counts_.setSize(nPatches_*nCountTypes, 0);
+    sums_.setSize(nPatches_*nSumTypes, 0);
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -134,11 +151,11 @@ std::vector<Foam::roughWallStatistics::reportLine>
 Foam::roughWallStatistics::report
 (
     const label patchi,
-    const roughWallPatchData::interactionType t,
+    const roughWallPatchSettings::interactionType t,
     std::string& heading
 ) const
 {
-    typedef roughWallPatchData::interactionType interactionType;
+    typedef roughWallPatchSettings::interactionType interactionType;
 
     auto n = [&](const countType c){ return scalar(count(patchi, c)); };
 
@@ -210,7 +227,7 @@ Foam::autoPtr<Foam::OFstream> Foam::roughWallStatistics::openFile
 (
     const polyMesh& mesh,
     const word& cloudName,
-    const roughWallPatchList& patches,
+    const UList<roughWallPatchSettings>& patches,
     const label precision
 )
 {
@@ -240,15 +257,19 @@ Foam::autoPtr<Foam::OFstream> Foam::roughWallStatistics::openFile
         << "# Model : roughWallInteraction" << nl
         << "# Time";
 
-    const roughWallStatistics none(patches.nNonProcessor());
+    const roughWallStatistics none(roughWallCompat::boundary(mesh));
     for (label patchi = 0; patchi < none.nPatches(); ++patchi)
     {
         std::string heading;
-        for (const reportLine& line : none.report(patchi, patches.type(patchi), heading))
+        for
+        (
+            const reportLine& line
+          : none.report(patchi, patches[patchi].type(), heading)
+        )
         {
             for (const std::string& column : line.columns)
             {
-                os  << tab << patches.name(patchi) << '_' << column.c_str();
+                os  << tab << none.patchName(patchi) << '_' << column.c_str();
             }
         }
     }
@@ -262,7 +283,7 @@ void Foam::roughWallStatistics::write
 (
     Ostream& log,
     OFstream* file,
-    const roughWallPatchList& patches,
+    const UList<roughWallPatchSettings>& patches,
     const Time& time
 ) const
 {
@@ -276,7 +297,7 @@ void Foam::roughWallStatistics::write
         std::string heading;
         const std::vector<reportLine> lines
         (
-            report(patchi, patches.type(patchi), heading)
+            report(patchi, patches[patchi].type(), heading)
         );
 
         if (lines.empty())
@@ -286,7 +307,7 @@ void Foam::roughWallStatistics::write
 
         const std::string::size_type at = heading.find("%s");
         log << "    " << heading.substr(0, at).c_str()
-            << patches.name(patchi) << heading.substr(at + 2).c_str() << nl;
+            << patchNames_[patchi] << heading.substr(at + 2).c_str() << nl;
 
         for (const reportLine& line : lines)
         {

@@ -1,0 +1,20 @@
+// roughWallCore: framework-free physics of Derevich's rough-wall collision model.
+// Copyright (C) 2026 roughWallInteraction authors. SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The whole core in one include, as Eigen has one header per module:
+//   roughWallBase.hpp            Vec3 and pi
+//   roughWallLimits.hpp          every default and limit of the settings
+//   roughWallCollision.hpp       collideWithRoughWall: one wall hit, the entry point
+//   restitutionCoefficients.hpp  k_n and k_t of a hit (statistics)
+//   profileRoughness.hpp         Delta(d) from Ra, Rq, Rz, RSm
+//   spinLiftAndTorque.hpp        rotational lift and fluid torque of a sphere
+// (and, below collideWithRoughWall: facetAngleSampler, facetCollision,
+// CollisionAngleDistribution, gaussianMass, standardNormal, fastMath)
+#pragma once
+
+#include "roughWallBase.hpp"
+#include "roughWallLimits.hpp"
+#include "roughWallCollision.hpp"
+#include "restitutionCoefficients.hpp"
+#include "profileRoughness.hpp"
+#include "spinLiftAndTorque.hpp"

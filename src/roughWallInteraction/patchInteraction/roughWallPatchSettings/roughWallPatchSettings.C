@@ -1,0 +1,677 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | roughWallInteraction: rough-wall particle
+   \\    /   O peration     | collisions for OpenFOAM's Lagrangian clouds
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+    Copyright (C) 2026 The roughWallInteraction authors
+-------------------------------------------------------------------------------
+License
+    This file is part of roughWallInteraction.
+
+    roughWallInteraction is free software: you can redistribute it and/or
+    modify it under the terms of the GNU General Public License as published
+    by the Free Software Foundation, either version 3 of the License, or
+    (at your option) any later version.
+
+    roughWallInteraction is distributed in the hope that it will be useful,
+    but WITHOUT ANY WARRANTY; without even the implied warranty of
+    MERCHANTABILITY or FITNESS FOR A PARTICULAR PURPOSE.  See the GNU General
+    Public License for more details.
+
+    You should have received a copy of the GNU General Public License along
+    with roughWallInteraction.  If not, see <http://www.gnu.org/licenses/>.
+
+    SPDX-License-Identifier: GPL-3.0-or-later
+
+\*---------------------------------------------------------------------------*/
+
+
+#include "roughWallPatchSettings.H"
+#include "roughWallInput.H"
+#include "foamCompat.H"
+#include "roughWallLimits.hpp"
+#include "Tuple2.H"
+#include "OStringStream.H"
+#include "emptyPolyPatch.H"
+#include "wedgePolyPatch.H"
+#include "wallPolyPatch.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+typedef roughWallPatchSettings settings;
+
+
+//- The names as one space-separated string, for messages
+string joined(const DynamicList<word>& names)
+{
+    string s;
+    for (const word& name : names)
+    {
+        s += (s.empty() ? "" : " ") + name;
+    }
+    return s;
+}
+
+
+//- The scope separator of dictionary names: '.' on v1912, '/' on the
+//- Foundation releases (so that messages name the entry as OpenFOAM does)
+const char* const scope = roughWallCompat::esi ? "." : "/";
+
+const char* const patchesMeaning =
+    "patch names or regular expressions and their interaction settings";
+
+const char* const angleMeaning =
+    "roughness angle Delta, standard deviation of the facet tilt [deg]; "
+    "a constant or a table ((d1 Delta1) (d2 Delta2) ...) against the "
+    "particle diameter d [m]";
+
+const char* const profileMeaning =
+    "profile roughness parameters of the wall (ISO 4287, SI units): "
+    "one or more of Ra, Rq, Rz, and RSm; Delta(d_p) = "
+    "atan(2 pi Rq / max(RSm, d_p))";
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * * //
+
+// The keywords of each type: read in this order (muD's range is [0, mu0]),
+// checked against the dictionary, written in the summary.  The defaults and
+// the law of rebound are standardWallInteraction's.
+#define ROUGHWALL_READ(member, how)                                            \
+    [](settings& s, const dictionary& d) { s.member = how; }
+#define ROUGHWALL_WRITE(value)                                                 \
+    [](const settings& s, Ostream& os) { os << value; }
+
+const Foam::roughWallPatchSettings::typeEntry
+Foam::roughWallPatchSettings::types[5] =
+{
+    {"rough", {
+        {
+            "e",
+            ROUGHWALL_READ(rough_.material.e, roughWallInput::readScalar(d, "e",
+                {0, 1, "normal restitution coefficient of a facet collision"})),
+            ROUGHWALL_WRITE(s.rough_.material.e)
+        },
+        {
+            "mu0",
+            ROUGHWALL_READ(rough_.material.mu0, roughWallInput::readScalar(d, "mu0",
+                {0, GREAT, "static friction coefficient (no-slip criterion)"})),
+            ROUGHWALL_WRITE(s.rough_.material.mu0)
+        },
+        {
+            // Sliding friction above the static one could reverse the slip
+            "muD",
+            ROUGHWALL_READ(rough_.material.muD, roughWallInput::readScalarOrDefault
+            (
+                d, "muD",
+                {
+                    0, s.rough_.material.mu0,
+                    "dynamic (sliding) friction coefficient; must not exceed "
+                    "mu0 (default: mu0)"
+                },
+                s.rough_.material.mu0
+            )),
+            ROUGHWALL_WRITE(s.rough_.material.muD)
+        },
+        {
+            "roughnessAngle",
+            [](settings& s, const dictionary& d) { s.readRoughness(d); },
+            ROUGHWALL_WRITE(s.roughnessDescription().c_str())
+        },
+        {"roughness", nullptr, nullptr},    // read with roughnessAngle
+        {
+            "lateralTilt",
+            ROUGHWALL_READ(rough_.lateralTilt, roughWallInput::readSwitchOrDefault
+            (
+                d, "lateralTilt",
+                "isotropic 3-D roughness: also tilt facets sideways by "
+                "N(0, Delta) (default: false; never applied in 2-D)",
+                false
+            )),
+            ROUGHWALL_WRITE((s.rough_.lateralTilt ? "true" : "false"))
+        },
+        {
+            "maxFacetCollisions",
+            ROUGHWALL_READ(rough_.maxFacetCollisions, roughWallInput::readLabelOrDefault
+            (
+                d, "maxFacetCollisions",
+                {
+                    roughWall::limits::minMaxFacetCollisions,
+                    roughWall::limits::maxMaxFacetCollisions,
+                    "bound on facet collisions per wall hit before a smooth "
+                    "mean-wall rebound is applied (default: 10)"
+                },
+                roughWall::limits::defaultMaxFacetCollisions
+            )),
+            ROUGHWALL_WRITE(s.rough_.maxFacetCollisions)
+        }
+    }},
+    {"rebound", {
+        {
+            "e",
+            ROUGHWALL_READ(e_, roughWallInput::readScalarOrDefault(d, "e",
+                {0, 1, "normal restitution coefficient (default: 1)"}, 1)),
+            ROUGHWALL_WRITE(s.e_)
+        },
+        {
+            "mu",
+            ROUGHWALL_READ(mu_, roughWallInput::readScalarOrDefault(d, "mu",
+                {0, 1, "fraction of the tangential velocity lost (default: 0)"},
+                0)),
+            ROUGHWALL_WRITE(s.mu_)
+        }
+    }},
+    {"stick", {}},
+    {"escape", {}},
+    {"none", {}}
+};
+
+#undef ROUGHWALL_READ
+#undef ROUGHWALL_WRITE
+
+static_assert
+(
+    roughWall::limits::defaultMaxFacetCollisions == 10,
+    "the meaning of maxFacetCollisions names its default"
+);
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::roughWallPatchSettings::readRoughness(const dictionary& dict)
+{
+    const bool angle = roughWallCompat::findLiteral(dict, "roughnessAngle");
+    const bool profile = roughWallCompat::findLiteral(dict, "roughness");
+
+    if (angle == profile)
+    {
+        roughWallInput::fatalBadEntry
+        (
+            dict, "roughnessAngle",
+            "exactly one of the keywords roughnessAngle (a constant or a "
+            "table against the diameter) and roughness (the profile "
+            "parameters)",
+            "the wall's roughness",
+            angle
+          ? "both roughnessAngle and roughness"
+          : "missing (neither roughnessAngle nor roughness)"
+        );
+    }
+
+    if (angle)
+    {
+        readAngle(dict);
+    }
+    else
+    {
+        readProfile(dict);
+    }
+}
+
+
+void Foam::roughWallPatchSettings::readAngle(const dictionary& dict)
+{
+    const scalar maxDeg = roughWall::limits::maxRoughnessAngleDeg;
+    const string allowed =
+        "a number in [0, " + Foam::name(maxDeg)
+      + "] or a table ((d1 Delta1) (d2 Delta2) ...) with Delta in [0, "
+      + Foam::name(maxDeg) + "] and d >= 0 strictly increasing";
+
+    const entry& e = *roughWallCompat::findLiteral(dict, "roughnessAngle");
+    const string found = "'" + roughWallInput::entryText(dict, "roughnessAngle") + "'";
+
+    auto fatal = [&](const string& what)
+    {
+        roughWallInput::fatalBadEntry(dict, "roughnessAngle", allowed, angleMeaning, what);
+    };
+
+    if (e.isDict())
+    {
+        fatal("a dictionary");
+    }
+
+    // A constant, or a table (d Delta) read by OpenFOAM's List<Tuple2>
+    List<Tuple2<scalar, scalar>> table;
+    if (e.stream().size() && e.stream()[0].isNumber())
+    {
+        scalar angle = 0;
+        if
+        (
+            !roughWallCompat::readAll(e.stream(), angle)
+         || !(angle >= 0 && angle <= maxDeg)
+        )
+        {
+            fatal(found);
+        }
+        table.setSize(1, Tuple2<scalar, scalar>(0, angle));
+    }
+    else if (!roughWallCompat::readAll(e.stream(), table) || table.empty())
+    {
+        fatal(found);
+    }
+
+    diameters_.setSize(table.size());
+    angles_.setSize(table.size());
+
+    forAll(table, rowi)
+    {
+        const scalar d = table[rowi].first();
+        const scalar angle = table[rowi].second();
+
+        if
+        (
+            !(d >= 0 && angle >= 0 && angle <= maxDeg)
+         || (rowi > 0 && !(d > diameters_[rowi - 1]))
+        )
+        {
+            fatal(found + " (row " + Foam::name(rowi + 1) + ")");
+        }
+
+        diameters_[rowi] = d;
+        angles_[rowi] = roughWall::limits::degToRad(angle);
+    }
+
+    // A constant, or a one-row table, is Delta for every diameter
+    rough_.roughnessAngle = angles_[0];
+    if (table.size() == 1)
+    {
+        diameters_.clear();
+    }
+}
+
+
+void Foam::roughWallPatchSettings::readProfile(const dictionary& dict)
+{
+    const entry& e = *roughWallCompat::findLiteral(dict, "roughness");
+    if (!e.isDict())
+    {
+        roughWallInput::fatalBadEntry
+        (
+            dict, "roughness", "a dictionary { Ra ...; RSm ...; }",
+            profileMeaning, "'" + roughWallInput::entryText(dict, "roughness") + "'"
+        );
+    }
+
+    // Named after the patch entry, so that the messages point at it (a
+    // sub-dictionary of an entry read from a stream loses that name)
+    dictionary rDict(e.dict());
+    rDict.name() = fileName(dict.name() + scope + "roughness");
+
+    static const wordList names{"Ra", "Rq", "Rz", "RSm"};
+    static const char* const meanings[] =
+    {
+        "arithmetic mean height of the profile [m]",
+        "root-mean-square height of the profile [m]",
+        "maximum height (peak to valley) of the profile [m]",
+        "mean width of the profile elements [m]"
+    };
+
+    roughWallInput::checkKeywords(rDict, names, "roughness");
+
+    double* values[] =
+        {&profile_.Ra, &profile_.Rq, &profile_.Rz, &profile_.RSm};
+    bool given[4];
+    forAll(names, i)
+    {
+        given[i] = roughWallCompat::findLiteral(rDict, names[i]);
+
+        // The signs are checked with the other limits below
+        *values[i] =
+            given[i]
+          ? roughWallInput::readScalar
+            (
+                rDict, names[i], {-GREAT, GREAT, meanings[i]}
+            )
+          : 0;
+    }
+
+    const roughWall::ProfileRoughnessError error =
+        roughWall::checkProfileRoughness
+        (
+            profile_, given[0], given[1], given[2]
+        );
+
+    if (!error.keyword.empty())
+    {
+        const word key(error.keyword);
+        roughWallInput::fatalBadEntry
+        (
+            rDict, key, error.allowed, profileMeaning,
+            roughWallCompat::findLiteral(rDict, key)
+          ? "'" + roughWallInput::entryText(rDict, key) + "'"
+          : string("missing")
+        );
+    }
+
+    fromProfile_ = true;
+    correlation_ = roughWall::RoughnessCorrelation(profile_);
+    rough_.roughnessAngle = correlation_.angleUncached(0);
+}
+
+
+Foam::scalar Foam::roughWallPatchSettings::tableAngle(const scalar d) const
+{
+    const label n = diameters_.size();
+
+    if (!(d > diameters_[0]))
+    {
+        return angles_[0];
+    }
+    if (d >= diameters_[n - 1])
+    {
+        return angles_[n - 1];
+    }
+
+    // Bisection for diameters_[lo] <= d < diameters_[lo + 1]
+    label lo = 0;
+    label hi = n - 1;
+    while (hi - lo > 1)
+    {
+        const label mid = (lo + hi)/2;
+        if (diameters_[mid] <= d)
+        {
+            lo = mid;
+        }
+        else
+        {
+            hi = mid;
+        }
+    }
+
+    const scalar f = (d - diameters_[lo])/(diameters_[hi] - diameters_[lo]);
+    return angles_[lo] + f*(angles_[hi] - angles_[lo]);
+}
+
+
+Foam::string Foam::roughWallPatchSettings::roughnessDescription() const
+{
+    OStringStream os;
+    if (fromProfile_)
+    {
+        os  << "atan(2 pi Rq/max(RSm, d)) with Rq = "
+            << correlation_.rmsHeight() << " m, RSm = " << profile_.RSm
+            << " m: " << roughWall::limits::radToDeg(rough_.roughnessAngle)
+            << " deg for d <= RSm";
+    }
+    else if (diameters_.empty())
+    {
+        os  << roughWall::limits::radToDeg(rough_.roughnessAngle) << " deg";
+    }
+    else
+    {
+        os  << "table of " << diameters_.size() << " rows, "
+            << roughWall::limits::radToDeg(angles_[0]) << " deg at d = " << diameters_[0]
+            << " m to " << roughWall::limits::radToDeg(angles_.last()) << " deg at d = "
+            << diameters_.last() << " m";
+    }
+    return os.str();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::roughWallPatchSettings::roughWallPatchSettings()
+:
+    patchName_(),
+    type_(interactionType::none),
+    e_(1),
+    mu_(0),
+    rough_(),
+    diameters_(),
+    angles_(),
+    fromProfile_(false),
+    profile_(),
+    correlation_()
+{}
+
+
+Foam::roughWallPatchSettings::roughWallPatchSettings
+(
+    const keyType& patchName,
+    const dictionary& dict
+)
+:
+    roughWallPatchSettings()
+{
+    patchName_ = patchName;
+
+    // The type: OpenFOAM's word reader, then the table of types
+    string typeNames;
+    for (const typeEntry& t : types)
+    {
+        typeNames += string(" ") + t.name;
+    }
+    const string allowed = "one of 5 words:" + typeNames;
+    const char* const meaning = "what happens to a parcel that hits the patch";
+
+    const word typeWord = roughWallInput::read<word>(dict, "type", allowed, meaning);
+    label typei = 0;
+    while (typei < 5 && typeWord != types[typei].name)
+    {
+        ++typei;
+    }
+    if (typei == 5)
+    {
+        roughWallInput::fatalBadEntry(dict, "type", allowed, meaning, "'" + typeWord + "'");
+    }
+    type_ = interactionType(typei);
+
+    // Read every keyword of the type, then stop at any other keyword
+    wordList used{"type"};
+    for (const keyword& k : types[typei].keywords)
+    {
+        if (k.read)
+        {
+            k.read(*this, dict);
+        }
+        used.append(k.name);
+    }
+
+    roughWallInput::checkKeywords(dict, used, string("type ") + typeName());
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::List<Foam::roughWallPatchSettings>
+Foam::roughWallPatchSettings::readPatches
+(
+    const dictionary& coeffs,
+    const polyBoundaryMesh& patches
+)
+{
+    // The list of (patch name or regular expression, dictionary): each
+    // dictionary read by OpenFOAM's reader, named after its entry so that
+    // messages point at it
+    auto fatalList = [&](const string& found)
+    {
+        roughWallInput::fatalBadEntry
+        (
+            coeffs, "patches",
+            "a list ( name { type ...; ... } \"regex\" { ... } ... ) "
+            "with at least one entry",
+            patchesMeaning, found
+        );
+    };
+
+    const entry* eptr = roughWallCompat::findLiteral(coeffs, "patches");
+    if (!eptr || eptr->isDict())
+    {
+        fatalList(eptr ? "a dictionary" : "missing");
+    }
+
+    const string listText = "'" + roughWallInput::entryText(coeffs, "patches") + "'";
+    ITstream& is = eptr->stream();
+    is.rewind();
+
+    DynamicList<roughWallPatchSettings> entries;
+    token t(is);
+    if (!t.isPunctuation() || t.pToken() != token::BEGIN_LIST)
+    {
+        fatalList(listText);
+    }
+    for (t = token(is); !t.isPunctuation() || t.pToken() != token::END_LIST; t = token(is))
+    {
+        if (!t.isWord() && !t.isString())
+        {
+            fatalList
+            (
+                listText
+              + " (expected a patch name or a quoted regular expression)"
+            );
+        }
+        const keyType name
+        (
+            t.isWord() ? keyType(t.wordToken()) : keyType(t.stringToken())
+        );
+
+        const token brace(is);
+        if (!brace.isPunctuation() || brace.pToken() != token::BEGIN_BLOCK)
+        {
+            fatalList(listText + " (expected '{' after " + name + ")");
+        }
+        is.putBack(brace);
+
+        entries.append
+        (
+            roughWallPatchSettings
+            (
+                name,
+                dictionary(fileName("patches" + (scope + name)), coeffs, is)
+            )
+        );
+    }
+    if (entries.empty())
+    {
+        fatalList("an empty list");
+    }
+
+    // Each mesh patch gets the first entry that matches it
+    List<roughWallPatchSettings> result(patches.size());
+    boolList covered(patches.size(), false);
+    forAllReverse(entries, entryi)
+    {
+        const labelList ids
+        (
+            roughWallCompat::matchingPatches(patches, entries[entryi].patchName())
+        );
+        if (ids.empty())
+        {
+            IOWarningInFunction(coeffs)
+                << "No patch matches the patches entry "
+                << entries[entryi].patchName() << endl;
+        }
+        for (const label patchi : ids)
+        {
+            result[patchi] = entries[entryi];
+            covered[patchi] = true;
+        }
+    }
+
+    // Parcels never hit coupled patches (OpenFOAM transfers them), empty
+    // patches or wedges (tracked in the mid-plane) as walls
+    DynamicList<word> uncovered;
+    DynamicList<word> noneOnWalls;
+    DynamicList<word> keptOnNonWalls;
+
+    Info<< "    Patch interactions:" << nl;
+    forAll(patches, patchi)
+    {
+        const polyPatch& pp = patches[patchi];
+        const roughWallPatchSettings& s = result[patchi];
+
+        if (pp.coupled() || isA<emptyPolyPatch>(pp) || isA<wedgePolyPatch>(pp))
+        {
+            result[patchi] = roughWallPatchSettings();
+            continue;
+        }
+        if (!covered[patchi])
+        {
+            uncovered.append(pp.name());
+            continue;
+        }
+        if (s.type() == interactionType::none && isA<wallPolyPatch>(pp))
+        {
+            noneOnWalls.append(pp.name());
+        }
+        if
+        (
+            s.keepsParcels()
+         && !isA<wallPolyPatch>(pp)
+         && !roughWallCompat::isConstraint(pp)
+        )
+        {
+            keptOnNonWalls.append(pp.name());
+        }
+
+        Info<< "        " << pp.name() << ": ";
+        s.writeSummary(Info);
+        Info<< nl;
+    }
+
+    if (noneOnWalls.size())
+    {
+        roughWallInput::fatalBadEntry
+        (
+            coeffs, "patches",
+            "rough, rebound, stick or escape on wall patches; none only on "
+            "other patches (OpenFOAM's own handling: escape through a patch, "
+            "reflection on a symmetry plane)",
+            patchesMeaning,
+            "type none for wall patch(es) " + joined(noneOnWalls)
+          + " (OpenFOAM would leave their parcels stuck on the wall)"
+        );
+    }
+    if (uncovered.size())
+    {
+        roughWallInput::fatalBadEntry
+        (
+            coeffs, "patches",
+            "an entry (name or regular expression) for every patch that is "
+            "not coupled, empty or wedge",
+            patchesMeaning,
+            "no entry for patch(es) " + joined(uncovered)
+        );
+    }
+
+    // v1912's KinematicParcel::hitPatch counts hits on such patches as
+    // escapes before the patch interaction model is called
+    if (roughWallCompat::esi && keptOnNonWalls.size())
+    {
+        WarningInFunction
+            << "Patches " << keptOnNonWalls << " are not of type wall but "
+            << "keep the parcels that hit them (rough, rebound or stick):"
+            << nl << "    OpenFOAM v1912 counts every hit on them as an escape"
+            << " in the 'Parcel fate: system' line." << endl;
+    }
+
+    return result;
+}
+
+
+void Foam::roughWallPatchSettings::writeSummary(Ostream& os) const
+{
+    os  << typeName();
+
+    const char* separator = ": ";
+    for (const keyword& k : types[label(type_)].keywords)
+    {
+        if (k.write)
+        {
+            os  << separator << k.name << " = ";
+            k.write(*this, os);
+            separator = ", ";
+        }
+    }
+}
+
+
+// ************************************************************************* //
