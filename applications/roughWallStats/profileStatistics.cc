@@ -46,7 +46,7 @@ EnvelopeResult envelopeStatistics(const EnvelopeSettings& s)
           << " points, seed " << s.seed;
     }
     result.description = d.str();
-    const double twoPiRq = 2*3.14159265358979323846*result.Rq;
+    const double twoPiRq = 2*roughWall::pi*result.Rq;
     for (const double dp : s.diameters)
     {
         EnvelopeRow row;
@@ -61,7 +61,7 @@ EnvelopeResult envelopeStatistics(const EnvelopeSettings& s)
 
 void writeEnvelopeTable(std::ostream& os, const EnvelopeResult& r, const int digits)
 {
-    const double deg = 180/3.14159265358979323846;
+    const double deg = 180/roughWall::pi;
     const auto num = [digits](double x)
     {
         char buffer[64];

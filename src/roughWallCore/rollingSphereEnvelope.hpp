@@ -83,6 +83,7 @@
 // mean peak-to-valley height is rzPerRqGaussian = 4.11 Rq (below).
 #pragma once
 
+#include "roughWallBase.hpp"
 #include "standardNormal.hpp"
 
 #include <algorithm>
@@ -542,7 +543,6 @@ struct SyntheticProfileSettings
 //  K = 2 ceil(6 pointsPerCorrelationLength/sqrt 2) + 1 kernel taps.
 inline SampledProfile syntheticGaussianProfile(const SyntheticProfileSettings& s)
 {
-    const double pi = 3.14159265358979323846;
     if (!(s.Rq > 0 && std::isfinite(s.Rq) && s.RSm > 0 && std::isfinite(s.RSm)))
     {
         throw std::invalid_argument("synthetic profile: Rq and RSm must be > 0");

@@ -6,7 +6,9 @@
 //   roughWallLimits.hpp          every default and limit of the settings
 //   roughWallCollision.hpp       collideWithRoughWall: one wall hit, the entry point
 //   restitutionCoefficients.hpp  k_n and k_t of a hit (statistics)
-//   profileRoughness.hpp         Delta(d) from Ra, Rq, Rz, RSm
+//   profileRoughness.hpp         Delta(d) from Ra, Rq, Rz, RSm (closed-form estimate)
+//   rollingSphereEnvelope.hpp    Delta(d) and the tilt's shape from a wall profile
+//   profileFile.hpp              reading a measured profile trace
 //   spinLiftAndTorque.hpp        rotational lift and fluid torque of a sphere
 // (and, below collideWithRoughWall: facetAngleSampler, facetCollision,
 // CollisionAngleDistribution, gaussianMass, standardNormal, fastMath)
@@ -17,4 +19,6 @@
 #include "roughWallCollision.hpp"
 #include "restitutionCoefficients.hpp"
 #include "profileRoughness.hpp"
+#include "rollingSphereEnvelope.hpp"
+#include "profileFile.hpp"
 #include "spinLiftAndTorque.hpp"
