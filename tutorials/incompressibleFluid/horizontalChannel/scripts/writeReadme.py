@@ -112,7 +112,13 @@ SMOOTH = "smooth"
 # Formatting
 
 def pm(value, se, fmt="%.3f", scale=1):
+    if not math.isfinite(value):
+        return "-"
     return (fmt + " +- " + fmt) % (scale*value, scale*se)
+
+
+def num(value, fmt="%.3f"):
+    return fmt % value if math.isfinite(value) else "-"
 
 
 def table(head, rows):
@@ -261,20 +267,20 @@ def wall_statistics(r):
         if not math.isfinite(r.s(v, "knImpulse")):
             continue
         rows.append(["`%s`" % v] + [
-            "%.3f / %.3f" % (r.s(v, "kn_lowerWall"), r.s(v, "kn_upperWall")),
+            "%s / %s" % (num(r.s(v, "kn_lowerWall")), num(r.s(v, "kn_upperWall"))),
             "%s / %s" % (pm(r.s(v, "knImpulse_lowerWall"), r.s(v, "knImpulse_lowerWall_se")),
                          pm(r.s(v, "knImpulse_upperWall"), r.s(v, "knImpulse_upperWall_se"))),
-            "%.3f / %.3f" % (r.s(v, "kt_lowerWall"), r.s(v, "kt_upperWall")),
+            "%s / %s" % (num(r.s(v, "kt_lowerWall")), num(r.s(v, "kt_upperWall"))),
             "%s / %s" % (pm(r.s(v, "ktImpulse_lowerWall"), r.s(v, "ktImpulse_lowerWall_se")),
                          pm(r.s(v, "ktImpulse_upperWall"), r.s(v, "ktImpulse_upperWall_se")))])
     return table(["variant", "mean k_n per hit, lower / upper",
-                  "impulse-weighted k_n = sum v''_n / sum |v'_n|, lower / upper",
+                  "impulse-weighted k_n = sum v''_n / sum abs(v'_n), lower / upper",
                   "mean k_t per hit, lower / upper",
-                  "impulse-weighted k_t = sum v''_t / sum |v'_t|, lower / upper"], rows) + (
+                  "impulse-weighted k_t = sum v''_t / sum abs(v'_t), lower / upper"], rows) + (
         "\n\n(The rough-wall model's statistics file, hits in the sampling window; "
         "impulse-weighted ratios +- the jackknife over 10 time blocks. The mean of "
         "the ratio per hit has no standard error: it is dominated by a few grazing "
-        "hits and does not converge like a mean.)")
+        "hits and does not converge like a mean. `-`: no hits on that wall.)")
 
 
 def spin_up(r):
