@@ -314,7 +314,7 @@ def time_step(r):
         return "(no time-step study in results/timeStep/)"
     keys = STATS + (("knImpulse", "impulse-weighted k_n", "%.3f", 1),
                     ("ktImpulse", "impulse-weighted k_t", "%.3f", 1))
-    rows = []
+    rows, worst = [], (0.0, "")
     for name, (summary, info) in sorted(r.timestep.items()):
         for v in summary:
             if v not in r.summary:
@@ -322,14 +322,22 @@ def time_step(r):
             for key, text, fmt, scale in keys:
                 a, sa = r.s(v, key), r.s(v, key + "_se")
                 b, sb = number(summary[v], key), number(summary[v], key + "_se")
-                rows.append(["`%s`" % v, "%g ms" % (1e3*number(summary[v], "deltaT")),
-                             text, pm(a, sa, fmt, scale), pm(b, sb, fmt, scale),
-                             "%.1f" % z(a, sa, b, sb)])
+                zz = z(a, sa, b, sb)
+                dt = "%g ms" % (1e3*number(summary[v], "deltaT"))
+                if zz > worst[0]:
+                    worst = (zz, "`%s`, %s, %s" % (v, dt, text))
+                rows.append(["`%s`" % v, dt, text, pm(a, sa, fmt, scale),
+                             pm(b, sb, fmt, scale), "%.1f" % zz])
     cmds = "; ".join("`%s` (commit %s)" % (relative_command(info["command"]), info["commit"])
                      for _, (_, info) in sorted(r.timestep.items()))
     return (table(["variant", "time step", "statistic", "at 1 ms (results/)",
                    "at this time step", "difference / combined s.e."], rows)
-            + "\n\nRuns: %s." % cmds)
+            + "\n\nLargest difference: %.1f combined standard errors (%s), over %d "
+            "comparisons; %s. Runs: %s." % (
+                worst[0], worst[1], len(rows),
+                "no time-step error is resolved above the standard errors"
+                if worst[0] < 3 else "a time-step error is resolved where the "
+                "difference exceeds 3 standard errors", cmds))
 
 
 def runtimes(r):
