@@ -368,7 +368,7 @@ def smoke_test(r):
         out.append("OpenFOAM-%s (`results/smokeTest-openfoam%s.csv`, %s):\n\n"
                    % (version, version, rows[0]["run"])
                    + table(["check", "measured", "required", "margin (bands: "
-                            "|difference| / band, below 1)"],
+                            "abs(difference) / band, below 1)"],
                            [[x["check"], x["value"], x["limit"], x["margin"]]
                             for x in rows]))
     return "\n\n".join(out)
