@@ -13,6 +13,11 @@
 //                     (Oesterle & Bui Dinh 1998, fitted for Re_p < 140; used
 //                     unchanged above, where it tends smoothly to the
 //                     constant 0.45: nothing diverges or switches)
+//   Loth              C_LR = Omega* (1 - {0.675 + 0.15 (1 + tanh[0.28 (Omega* - 2)])}
+//                                    tanh[0.18 Re_p^0.5]),  Omega* = Re_R/Re_p = 2 Gamma
+//                     (Loth 2008, AIAA J. 46, 801-809, as reproduced in
+//                     docs/spin.md: Re_p < 2000, Omega* < 20; linear in the
+//                     spin, Rubinow-Keller's Omega* for Re_p -> 0)
 // Fluid torque        T = (rho_f/2) (d/2)^5 C_R |Omega_rel| Omega_rel
 //   Stokes            C_R = 64 pi/Re_R (all Re_R)
 //   DennisSinghIngham C_R = 64 pi/Re_R                       Re_R <= 32
@@ -55,7 +60,8 @@ namespace spin
 enum class LiftCoefficient
 {
     RubinowKeller,
-    OesterleBuiDinh
+    OesterleBuiDinh,
+    Loth
 };
 
 //- Rotational-drag (torque) coefficient C_R
@@ -67,6 +73,10 @@ enum class TorqueCoefficient
 
 //- Largest particle Reynolds number of Oesterle & Bui Dinh's fit
 constexpr double oesterleBuiDinhMaxRe = 140;
+
+//- Range of Loth's correlation: Re_p < 2000, Omega* = Re_R/Re_p < 20
+constexpr double lothMaxRe = 2000;
+constexpr double lothMaxSpinRatio = 20;
 
 //- Largest Re_R of Dennis, Singh & Ingham's Stokes branch, and of their
 //  computations
@@ -171,12 +181,37 @@ inline double liftCoefficientOesterleBuiDinh(const double Rep, const double ReR)
     return 0.45 + (ReR/Rep - 0.45)*std::exp(-0.05684*std::pow(ReR, 0.4)*std::pow(Rep, 0.3));
 }
 
+//- Loth's factor on the Rubinow-Keller force, (Re_p/Re_R) C_LR, of the
+//  spin ratio Omega* = Re_R/Re_p (>= 0, +inf allowed) and Re_p >= 0:
+//    1 - {0.675 + 0.15 (1 + tanh[0.28 (Omega* - 2)])} tanh[0.18 Re_p^0.5]
+//  in [0.025, 1]: 1 at Re_p = 0 (Rubinow-Keller), never negative
+inline double lothFactor(const double spinRatio, const double Rep)
+{
+    return
+        1
+      - (0.675 + 0.15*(1 + std::tanh(0.28*(spinRatio - 2))))
+       *std::tanh(0.18*std::sqrt(Rep));
+}
+
+//- C_LR of Loth (2008) (Re_p, Re_R > 0)
+inline double liftCoefficientLoth(const double Rep, const double ReR)
+{
+    const double spinRatio = ReR/Rep;
+    return spinRatio*lothFactor(spinRatio, Rep);
+}
+
 //- C_LR of a named choice (Re_p, Re_R > 0)
 inline double liftCoefficient(const LiftCoefficient c, const double Rep, const double ReR)
 {
-    return c == LiftCoefficient::RubinowKeller
-        ? liftCoefficientRubinowKeller(Rep, ReR)
-        : liftCoefficientOesterleBuiDinh(Rep, ReR);
+    switch (c)
+    {
+        case LiftCoefficient::RubinowKeller:
+            return liftCoefficientRubinowKeller(Rep, ReR);
+        case LiftCoefficient::Loth:
+            return liftCoefficientLoth(Rep, ReR);
+        default:
+            return liftCoefficientOesterleBuiDinh(Rep, ReR);
+    }
 }
 
 //- The rotational lift on a sphere of diameter d [m] with slip velocity
@@ -188,6 +223,7 @@ inline double liftCoefficient(const LiftCoefficient c, const double Rep, const d
 //  E = exp(-0.05684 Re_R^0.4 Re_p^0.3) and Re_p/Re_R = |U|/(|Omega| d),
 //    RubinowKeller    (Re_p/Re_R) C_LR = 1
 //    OesterleBuiDinh  (Re_p/Re_R) C_LR = E + 0.45 (|U|/(|Omega| d)) (1 - E)
+//    Loth             (Re_p/Re_R) C_LR = lothFactor(|Omega| d/|U|, Re_p)
 //  so  |F| = (pi/8) rho [d^3 |Omega||U| E + 0.45 d^2 |U|^2 (1 - E)] sin(angle).
 inline Vec3 rotationalLift
 (
@@ -245,6 +281,12 @@ inline Vec3 rotationalLift
         }
 
         m = product(spinTerm, E) + 0.45*product(product(d2, product(U, U)), oneMinusE);
+    }
+    else if (c == LiftCoefficient::Loth)
+    {
+        // Omega* = |Omega| d/|U| (+inf for a subnormal |U|: tanh -> 1)
+        const double spinRatio = product(W, d)/U;
+        m = product(spinTerm, lothFactor(spinRatio, particleReynolds(U, d, nu)));
     }
 
     return scaled(axis, product(pi/8*rho, m));

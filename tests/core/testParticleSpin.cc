@@ -246,6 +246,84 @@ TEST(RotationalLift, OesterleBuiDinhTendsToRubinowKeller)
 }
 
 
+// Loth (2008), AIAA J. 46, 801-809, as reproduced in docs/spin.md, typed
+// here from that text (spin ratio Omega* = Re_R/Re_p = 2 Gamma):
+//   C_LR = Omega* (1 - {0.675 + 0.15 (1 + tanh[0.28 (Omega* - 2)])} tanh[0.18 Re_p^0.5])
+// Table computed in Python from that line (Rep, ReR, C_LR); by hand at
+// Re_p = 100, Re_R = 1: Omega* = 0.01, tanh(1.8) = 0.946806012846268,
+// tanh(-0.5572) = -0.505896994252837,
+// C = 0.01 (1 - (0.675 + 0.15 (1 - 0.505897)) 0.946806) = 0.00290733.
+TEST(SpinCoefficients, LothTable)
+{
+    struct Row { double Rep, ReR, C; };
+    const std::vector<Row> table =
+    {
+        {0.01, 0.002, 0.19728153243690238},
+        {1, 0.1, 0.086608964482325801},
+        {10, 0.2, 0.012284202234310823},
+        {100, 1, 0.0029073298680774465},
+        {100, 60, 0.16312238513485092},
+        {150, 300, 0.38966635225424051},
+        {1000, 20000, 0.50069501274295325},
+    };
+    for (const Row& r : table)
+    {
+        EXPECT_LE(relativeError(liftCoefficientLoth(r.Rep, r.ReR), r.C), 1e-14)
+            << "Re_p = " << r.Rep << ", Re_R = " << r.ReR;
+        EXPECT_EQ(liftCoefficient(LiftCoefficient::Loth, r.Rep, r.ReR),
+                  liftCoefficientLoth(r.Rep, r.ReR));
+    }
+    const double byHand =
+        0.01*(1 - (0.675 + 0.15*(1 - 0.505896994252837))*0.946806012846268);
+    EXPECT_LE(relativeError(liftCoefficientLoth(100, 1), byHand), 1e-12);
+}
+
+
+// Loth's force is Rubinow-Keller's times a factor in [0.025, 1]: linear in
+// the spin at small spin ratio (unlike Oesterle-Bui Dinh's Re_R^0.4), equal
+// to Rubinow-Keller as Re_p -> 0, never reversed.  d = 1 mm, nu = 1e-5:
+// Re_p = 100 |U|, Re_R = 0.1 |Omega|.  U = 1 x (Re_p = 100), Omega = 10 z
+// (Re_R = 1): F_y = pi/8*1.2*1e-9*(100/1)*0.0029073298680774465*10*1
+TEST(RotationalLift, LothForceAndLimits)
+{
+    const Vec3 F = rotationalLift(Vec3(1, 0, 0), Vec3(0, 0, 10), 1e-3, 1.2, 1e-5,
+                                  LiftCoefficient::Loth);
+    EXPECT_LE(relativeError(F.y(), pi/8*1.2*1e-9*100*0.0029073298680774465*10), 1e-13);
+    EXPECT_EQ(F.x(), 0);
+    EXPECT_EQ(F.z(), 0);
+
+    // Linear in the spin at a fixed slip: halving Omega (Omega* 0.01 -> 0.005)
+    // changes the factor by tanh's slope only, < 0.1 %
+    const Vec3 Fh = rotationalLift(Vec3(1, 0, 0), Vec3(0, 0, 5), 1e-3, 1.2, 1e-5,
+                                   LiftCoefficient::Loth);
+    EXPECT_NEAR(Fh.y()/F.y(), 0.5, 1e-3);
+
+    // Re_p -> 0 at a fixed Omega*: Rubinow-Keller (factor 1 - O(sqrt(Re_p)))
+    for (const double s : {1e-2, 1e-4, 1e-6})
+    {
+        const Vec3 U(s, 0, 0), W(0, 0, 2000*s);
+        const Vec3 FL = rotationalLift(U, W, 1e-3, 1.2, 1e-5, LiftCoefficient::Loth);
+        const Vec3 FRK = rotationalLift(U, W, 1e-3, 1.2, 1e-5, LiftCoefficient::RubinowKeller);
+        EXPECT_LE((FL - FRK).norm()/FRK.norm(), 0.2*std::sqrt(100*s)) << "s = " << s;
+    }
+
+    // Factor within [0.025, 1] and the force along Rubinow-Keller's
+    std::mt19937_64 engine(29);
+    std::uniform_real_distribution<double> u(-1, 1), e(-6, 6);
+    for (int i = 0; i < 1000; ++i)
+    {
+        const Vec3 U = std::pow(10, e(engine))*Vec3(u(engine), u(engine), u(engine));
+        const Vec3 W = std::pow(10, e(engine))*Vec3(u(engine), u(engine), u(engine));
+        const Vec3 FL = rotationalLift(U, W, 2e-4, rhoAir, nuAir, LiftCoefficient::Loth);
+        const Vec3 FRK = rotationalLift(U, W, 2e-4, rhoAir, nuAir, LiftCoefficient::RubinowKeller);
+        const double factor = FL.norm()/FRK.norm();
+        EXPECT_GE(factor, 0.025 - 1e-12);
+        EXPECT_LE(factor, 1 + 1e-12);
+        EXPECT_GE(FL.dot(FRK), (1 - 1e-12)*FL.norm()*FRK.norm());
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Fluid torque  * * * * * * * * * * * * * * //
 
 // Stokes: T = 8 pi mu r^3 Omega = pi mu d^3 Omega.  d = 1e-4, Omega = 1 (Re_R =
@@ -290,7 +368,8 @@ TEST(FluidTorque, StokesRelaxationTime)
 
 TEST(ParticleSpin, ZeroSpinAndZeroSlipGiveZero)
 {
-    for (const LiftCoefficient c : {LiftCoefficient::RubinowKeller, LiftCoefficient::OesterleBuiDinh})
+    for (const LiftCoefficient c :
+         {LiftCoefficient::RubinowKeller, LiftCoefficient::OesterleBuiDinh, LiftCoefficient::Loth})
     {
         EXPECT_EQ(rotationalLift(Vec3(1, 2, 3), Vec3::Zero(), 1e-3, rhoAir, nuAir, c), Vec3::Zero());
         EXPECT_EQ(rotationalLift(Vec3::Zero(), Vec3(1, 2, 3), 1e-3, rhoAir, nuAir, c), Vec3::Zero());
@@ -331,7 +410,8 @@ TEST(ParticleSpin, NoNaNAtExtremes)
                     const Vec3 slipU = U*e;
                     const Vec3 slipW = W*Vec3(-e.z(), e.y(), e.x()).normalized();
                     for (const LiftCoefficient c :
-                         {LiftCoefficient::RubinowKeller, LiftCoefficient::OesterleBuiDinh})
+                         {LiftCoefficient::RubinowKeller, LiftCoefficient::OesterleBuiDinh,
+                          LiftCoefficient::Loth})
                     {
                         const Vec3 F = rotationalLift(slipU, slipW, d, rhoAir, nuAir, c);
                         ASSERT_FALSE(anyNaN(F)) << "lift: d " << d << " U " << U << " W " << W;

@@ -11,8 +11,10 @@ Checks:
     an independent numpy Monte Carlo of the operator, 1e6 samples) within 4
     combined standard errors;
   - the statistics file (reduced over processors in parallel) counts every
-    hit and its mean k_n, k_t and energy loss equal those computed from the
-    parcels (to 1e-8 relative, 1e-6 for the energy: the file has 12 digits);
+    hit and its mean k_n, k_t, the impulse-weighted sum(v''_n)/sum|v'_n|,
+    sum(v''_t)/sum|v'_t| with their four sums, and the energy loss equal
+    those computed from the parcels (to 1e-8 relative, 1e-6 for the energy:
+    the file has 12 digits);
   - spin: written for the colliding cloud, absent for the kinematic cloud.
 
 With --wallVelocity u the wall moves at (u, 0, 0): the incidence angles
@@ -189,6 +191,25 @@ def test():
     t.check(close(col("lowerWall_meanKt"), kt_all.mean()),
             "statistics file: meanKt %.10g = parcels' %.10g"
             % (col("lowerWall_meanKt"), kt_all.mean()))
+    # Impulse-weighted ratios: oracle from the parcels' incident and rebound
+    # velocities (relative to the wall, n = y, t = the incident tangential
+    # direction, here x; every incidence of the test has a k_t)
+    vn_in = np.abs(incident[:, 1]).sum()
+    vn_out = U_rel[:, 1].sum()
+    vt_in = np.abs(incident[:, 0]).sum()
+    vt_out = (U_rel[:, 0]*np.sign(incident[:, 0])).sum()
+    for name, value in (("sumVnIn", vn_in), ("sumVnOut", vn_out),
+                        ("sumVtIn", vt_in), ("sumVtOut", vt_out),
+                        ("impulseKn", vn_out/vn_in),
+                        ("impulseKt", vt_out/vt_in)):
+        t.check(close(col("lowerWall_" + name), value),
+                "statistics file: %s %.10g = parcels' %.10g"
+                % (name, col("lowerWall_" + name), value))
+    t.check(abs(col("lowerWall_impulseKn") - col("lowerWall_meanKn"))
+            > 1e-3*col("lowerWall_meanKn"),
+            "impulse-weighted k_n %.6g differs from the mean of k_n %.6g "
+            "(the test tells them apart)"
+            % (col("lowerWall_impulseKn"), col("lowerWall_meanKn")))
     t.check(close(col("lowerWall_energyLoss"), energy_loss.sum(), 1e-6),
             "statistics file: energyLoss %.10g = parcels' %.10g"
             % (col("lowerWall_energyLoss"), energy_loss.sum()))

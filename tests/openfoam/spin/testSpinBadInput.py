@@ -36,7 +36,7 @@ MODELS = {
     # model: (type name, settings of a coefficient, coefficients)
     "lift": ("rotationalLift",
              lambda body: ("rotationalLift\n{\n%s\n}" % body, ""),
-             ("OesterleBuiDinh", "RubinowKeller")),
+             ("OesterleBuiDinh", "RubinowKeller", "Loth")),
     "torque": ("fluidTorque",
                lambda body: ("", "fluidTorque1\n{\n    type fluidTorque;"
                                  "\n%s\n}" % body),
@@ -48,7 +48,7 @@ MODELS = {
 INCLUDE = {"rotationalLift": "spinForces", "fluidTorque": "spinFunctions"}
 
 #: The allowed coefficients as the message lists them
-ALLOWED = {"lift": "RubinowKeller OesterleBuiDinh",
+ALLOWED = {"lift": "RubinowKeller OesterleBuiDinh Loth",
            "torque": "Stokes DennisSinghIngham"}
 
 

@@ -192,7 +192,17 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
           + rotationalEnergyLoss
         );
 
-    stats_.addHit(pp.index(), report, k.k.kn, k.hasKt, k.k.kt, energyLoss);
+    // The impulse-weighted ratios: the velocities along n and along the
+    // incident tangential direction
+    const roughWall::Vec3 vt0 = v0 - v0.dot(n)*n;
+    const scalar vtIn = k.hasKt ? vt0.norm() : 0;
+
+    stats_.addHit
+    (
+        pp.index(), report, k.k.kn, k.hasKt, k.k.kt, energyLoss,
+        mag(v0.dot(n)), v.dot(n),
+        vtIn, k.hasKt ? v.dot(vt0)/vtIn : 0
+    );
 }
 
 

@@ -147,6 +147,18 @@ Foam::scalar Foam::roughWallStatistics::meanKt(const label patchi) const
 }
 
 
+Foam::scalar Foam::roughWallStatistics::impulseKn(const label patchi) const
+{
+    return ratio(sum(patchi, VN_OUT), sum(patchi, VN_IN));
+}
+
+
+Foam::scalar Foam::roughWallStatistics::impulseKt(const label patchi) const
+{
+    return ratio(sum(patchi, VT_OUT), sum(patchi, VT_IN));
+}
+
+
 std::vector<Foam::roughWallStatistics::reportLine>
 Foam::roughWallStatistics::report
 (
@@ -208,6 +220,19 @@ Foam::roughWallStatistics::report
                 {
                     "mean k_n, k_t", {"meanKn", "meanKt"},
                     {meanKn(patchi), meanKt(patchi)}, 0
+                },
+                {
+                    "impulse-weighted k_n, k_t", {"impulseKn", "impulseKt"},
+                    {impulseKn(patchi), impulseKt(patchi)}, 0
+                },
+                {
+                    "sums |v'_n|, v''_n, |v'_t|, v''_t",
+                    {"sumVnIn", "sumVnOut", "sumVtIn", "sumVtOut"},
+                    {
+                        sum(patchi, VN_IN), sum(patchi, VN_OUT),
+                        sum(patchi, VT_IN), sum(patchi, VT_OUT)
+                    },
+                    0
                 },
                 {
                     "kinetic energy loss [J]", {"energyLoss"},

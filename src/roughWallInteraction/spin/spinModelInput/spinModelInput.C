@@ -85,7 +85,7 @@ Foam::label readChoice
 }
 
 //- Names of the coefficients, in the order of the core's enumerations
-const Foam::wordList liftNames{"RubinowKeller", "OesterleBuiDinh"};
+const Foam::wordList liftNames{"RubinowKeller", "OesterleBuiDinh", "Loth"};
 const Foam::wordList torqueNames{"Stokes", "DennisSinghIngham"};
 
 } // End anonymous namespace
@@ -105,7 +105,8 @@ roughWall::spin::LiftCoefficient Foam::spinModelInput::readLiftCoefficient
         dict, "coefficient", liftNames,
         label(LiftCoefficient::OesterleBuiDinh),
         "rotational lift coefficient C_LR: OesterleBuiDinh (Oesterle & "
-        "Bui Dinh 1998) or RubinowKeller (Rubinow & Keller 1961, Re_p << 1)"
+        "Bui Dinh 1998), RubinowKeller (Rubinow & Keller 1961, Re_p << 1) "
+        "or Loth (Loth 2008, Re_p < 2000, Omega* = 2 Gamma < 20)"
         " (default: OesterleBuiDinh)"
     );
 

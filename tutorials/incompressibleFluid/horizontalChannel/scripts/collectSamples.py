@@ -5,8 +5,8 @@ At every write time the run wrote all parcels (lagrangian/cloud: positions,
 U, d, rho, angularMomentum, origId, origProcId, ...) and the wall impacts
 counted by the patchCollisionDensity cloud function
 (cloud:numberCollisionDensity). This script keeps what the statistics need
-(time, height, streamwise and wall-normal velocity, spin, parcel key; impacts
-per wall) in CASE/parcelSamples.npz. The snapshots are the bulk of a run's
+(time, height, the three velocity components, the spin vector, parcel key;
+impacts per wall) in CASE/parcelSamples.npz. The snapshots are the bulk of a run's
 output (about 2 MB per 10000 parcels per write time), so with --prune it then
 removes every write time except the last one, which stays complete for a
 restart and for viewing.
@@ -38,11 +38,11 @@ def time_dirs(case):
 
 
 def read_snapshot(case, time, mesh):
-    """Parcels at one write time: y' (tracking mesh), Ux, Uy, spin about z
-    [rad/s] and a parcel key."""
+    """Parcels at one write time: y' (tracking mesh), U (3 components),
+    spin (3 components) [rad/s] and a parcel key."""
     cloud = os.path.join(case, time, "lagrangian", tc.CLOUD)
     if not os.path.exists(os.path.join(cloud, "positions")):
-        return (np.zeros(0), np.zeros((0, 2)), np.zeros(0),
+        return (np.zeros(0), np.zeros((0, 3)), np.zeros((0, 3)),
                 np.zeros(0, np.int64))
     pos = fc.read_positions(os.path.join(cloud, "positions"), mesh)[0]
     U = fc.read_field(os.path.join(cloud, "U")).reshape(-1, 3)
@@ -58,7 +58,7 @@ def read_snapshot(case, time, mesh):
         raise ValueError("%s: fields of different lengths" % cloud)
     # Parcel key: only its remainder modulo the number of statistics groups
     # is used; the same parcel keeps it for the whole run
-    return (pos[:, 1], U[:, :2], L[:, 2]/inertia,
+    return (pos[:, 1], U, L/inertia[:, None],
             orig_proc.reshape(-1)*100003 + orig_id.reshape(-1))
 
 
@@ -95,15 +95,15 @@ def main():
     mesh = tc.read_mesh(case)
     area = wall_face_area(case, mesh)
 
-    t, counts, y, ux, uy, wz, ids, impacts = [], [], [], [], [], [], [], []
+    t, counts, y, ids, impacts = [], [], [], [], []
+    u, w = [], []
     for name, value in times:
-        yp, U, omega_z, key = read_snapshot(case, name, mesh)
+        yp, U, omega, key = read_snapshot(case, name, mesh)
         t.append(value)
         counts.append(len(yp))
         y.append(yp)
-        ux.append(U[:, 0])
-        uy.append(U[:, 1])
-        wz.append(omega_z)
+        u.append(U)
+        w.append(omega)
         ids.append(key)
         impacts.append(wall_impacts(case, name, area))
 
@@ -111,9 +111,12 @@ def main():
         os.path.join(case, "parcelSamples.npz"),
         time=np.array(t), count=np.array(counts),
         y=np.concatenate(y).astype(np.float32),
-        Ux=np.concatenate(ux).astype(np.float32),
-        Uy=np.concatenate(uy).astype(np.float32),
-        omegaZ=np.concatenate(wz).astype(np.float32),
+        Ux=np.concatenate([a[:, 0] for a in u]).astype(np.float32),
+        Uy=np.concatenate([a[:, 1] for a in u]).astype(np.float32),
+        Uz=np.concatenate([a[:, 2] for a in u]).astype(np.float32),
+        omegaX=np.concatenate([a[:, 0] for a in w]).astype(np.float32),
+        omegaY=np.concatenate([a[:, 1] for a in w]).astype(np.float32),
+        omegaZ=np.concatenate([a[:, 2] for a in w]).astype(np.float32),
         id=np.concatenate(ids).astype(np.int64),
         wallImpacts=np.array(impacts), walls=np.array(tc.WALLS))
     print("collectSamples: %s: %d snapshots, %d parcel samples"

@@ -17,13 +17,29 @@ and writes into OUT_DIR:
   velocity.png          velocity profiles of all variants
   wallHits.png          wall-hit statistics
   spinUp.png            approach to the statistically steady state
+  spinRatios.csv        per variant: quantiles of the spin ratio Gamma, Re_p
+                        and Re_R of the beads, and the fraction of samples
+                        outside the range of each rotational-lift coefficient
+  spinRatios.png        their distributions
+
+Spin ratios: from each parcel sample's velocity and spin and the air at its
+height (the mapped RANS profile u(y) and its rotation -0.5 du/dy about z):
+U_rel = u(y) x - U_p, Omega_rel = -0.5 du/dy z - omega_p, Re_p = |U_rel| d/nu,
+Re_R = |Omega_rel| d^2/nu, Gamma = Re_R/(2 Re_p). The lift in the run uses
+the air velocity with the dispersion model's fluctuation, which is not
+written: these are the ratios of the mean flow.
 
 Statistics: the parcels do not interact (one-way coupling, no parcel-parcel
 collisions), so they are independent realisations. They are split into
 N_GROUPS groups by their id; the standard error of every statistic is the
 jackknife (leave-one-group-out) estimate over the groups. The samples of one
 parcel at different times are correlated; keeping whole parcels in one group
-makes the estimate account for that.
+makes the estimate account for that. The wall statistics (impacts, the
+rough-wall model's impulse-weighted k_n and k_t) exist only as totals over
+all parcels at each write time: their standard error is the jackknife over
+N_BLOCKS consecutive blocks of the sampling window, each a sum over
+thousands of independent parcels (the blocks are longer than a bead's
+velocity relaxation time, so neighbouring blocks are nearly uncorrelated).
 
 Usage: postProcess.py OUT_DIR CASE_DIR [CASE_DIR ...]
 """
@@ -43,6 +59,11 @@ import matplotlib.pyplot as plt
 
 N_BINS = 25
 N_GROUPS = 20
+N_BLOCKS = 10           # time blocks of the wall statistics' jackknife
+QUANTILES = (0.01, 0.1, 0.5, 0.9, 0.99)
+# Documented ranges of the rotational-lift coefficients (docs/spin.md)
+OESTERLE_RANGE = {"Rep": (10, 140), "Gamma": (1, 6)}
+LOTH_RANGE = {"Rep": (0, 2000), "Gamma": (0, 10)}     # Omega* = 2 Gamma < 20
 MIN_SAMPLES = 10        # velocity statistics of a bin need this many samples
 WALLS = tc.WALLS
 EPS_TIME = 1e-9
@@ -106,6 +127,44 @@ def jackknife(stat, sums):
     return value, se
 
 
+def air_profile(case):
+    """(y', u, du/dy) of the mapped air velocity of a tracking case (rows
+    of cells; y' the tracking coordinate)."""
+    mesh = tc.read_mesh(case)
+    y = mesh.cell_centres[:, 1]
+    U = fc.internal_field(os.path.join(case, "0", "U"))[:, 0]
+    rows, inv = np.unique(np.round(y, 12), return_inverse=True)
+    u = np.bincount(inv, weights=U)/np.bincount(inv)
+    return rows, u, np.gradient(u, rows)
+
+
+def kinematic_viscosity(case):
+    props = fc.read_text(os.path.join(case, "constant", "physicalProperties"))
+    return float(re.search(r"^nu\s+([^;]+);", props, re.M).group(1))
+
+
+def spin_ratios(case, d, y_track, U, omega):
+    """Re_p, Re_R and Gamma of parcel samples (see the docstring)."""
+    rows, u, dudy = air_profile(case)
+    nu = kinematic_viscosity(case)
+    uf = np.interp(y_track, rows, u)
+    urel = np.stack([uf - U[:, 0], -U[:, 1], -U[:, 2]], axis=1)
+    wrel = -omega.copy()
+    wrel[:, 2] += -0.5*np.interp(y_track, rows, dudy)
+    Rep = np.linalg.norm(urel, axis=1)*d/nu
+    ReR = np.linalg.norm(wrel, axis=1)*d*d/nu
+    with np.errstate(divide="ignore", invalid="ignore"):
+        gamma = ReR/(2*Rep)
+    return Rep, ReR, gamma
+
+
+def outside(rng, Rep, gamma):
+    """Fraction of samples outside a coefficient's (Re_p, Gamma) range."""
+    out = (Rep < rng["Rep"][0]) | (Rep > rng["Rep"][1]) \
+        | ~(gamma >= rng["Gamma"][0]) | ~(gamma <= rng["Gamma"][1])
+    return float(np.mean(out))
+
+
 def analyse(case):
     info = tc.read_case_info(case)
     H, d = info["height"], info["diameter"]
@@ -115,7 +174,10 @@ def analyse(case):
     snap = np.repeat(np.arange(len(time)), count)
     y = s["y"].astype(float) + r        # tracking coordinate -> channel height
     ux, uy = s["Ux"].astype(float), s["Uy"].astype(float)
-    spin = 0.5*d*s["omegaZ"].astype(float)     # surface speed of the spin [m/s]
+    uz = s["Uz"].astype(float) if "Uz" in s else np.zeros_like(ux)
+    omega = np.stack([s[k].astype(float) if k in s else np.zeros_like(ux)
+                      for k in ("omegaX", "omegaY", "omegaZ")], axis=1)
+    spin = 0.5*d*omega[:, 2]     # surface speed of the spin about z [m/s]
     group = s["id"] % N_GROUPS
 
     # Spin-up history: every write time
@@ -130,8 +192,11 @@ def analyse(case):
         raise RuntimeError("%s: fewer than 2 snapshots after the spin-up" % case)
     t0, t1 = time[sampled[0]], time[sampled[-1]]
     mask = snap >= sampled[0]
-    y, ux, uy, spin = y[mask], ux[mask], uy[mask], spin[mask]
+    y, ux, uy, uz, spin = y[mask], ux[mask], uy[mask], uz[mask], spin[mask]
+    omega = omega[mask]
     group, snap = group[mask], snap[mask]
+    Rep, ReR, gamma = spin_ratios(case, d, y - r, np.stack([ux, uy, uz], axis=1),
+                                  omega)
 
     edges = np.linspace(r, H - r, N_BINS + 1)
     b = np.clip(np.searchsorted(edges, y, side="right") - 1, 0, N_BINS - 1)
@@ -173,7 +238,10 @@ def analyse(case):
     scal = {}
     for k, w in (("n", np.ones_like(y)), ("up", (y > 0.5*H).astype(float)),
                  ("y", y/H), ("ux", ux), ("uy", uy), ("uy2", uy*uy),
-                 ("spin", spin)):
+                 ("ux2", ux*ux), ("uz", uz), ("uz2", uz*uz),
+                 ("spin", spin), ("spinX", 0.5*d*omega[:, 0]),
+                 ("spinY", 0.5*d*omega[:, 1]),
+                 ("spin2", (0.5*d)**2*np.sum(omega**2, axis=1))):
         a = np.zeros((N_GROUPS, 2))
         np.add.at(a, (group, late), w)
         scal[k] = a
@@ -182,6 +250,15 @@ def analyse(case):
         n = t["n"][i].sum()
         m = t["uy"][i].sum()/n
         return np.sqrt(max(t["uy2"][i].sum()/n - m*m, 0))
+
+    def rms(key):
+        def f(t):
+            n = t["n"].sum()
+            m = t[key].sum()/n
+            return np.sqrt(max(t[key + "2"].sum()/n - m*m, 0))
+        return f
+
+    ubulk = carrier_statistics(info)["Ubulk"]
 
     summary = dict(info)
     for name, fun in (
@@ -195,16 +272,76 @@ def analyse(case):
             ("meanUx", lambda t: t["ux"].sum()/t["n"].sum()),
             ("meanUxEarly", lambda t: t["ux"][0]/t["n"][0]),
             ("meanUxLate", lambda t: t["ux"][1]/t["n"][1]),
-            ("meanSpinSpeed", lambda t: t["spin"].sum()/t["n"].sum())):
+            ("meanSpinSpeed", lambda t: t["spin"].sum()/t["n"].sum()),
+            ("UxRms", rms("ux")),
+            ("UzRms", rms("uz")),
+            ("meanUxOverBulk", lambda t: t["ux"].sum()/t["n"].sum()/ubulk),
+            ("rmsSpinSpeed", lambda t: np.sqrt(t["spin2"].sum()/t["n"].sum()))):
         summary[name], summary[name + "_se"] = (float(v) for v in jackknife(fun, scal))
     summary.update(snapshots=len(sampled), samples=int(mask.sum()),
                    sampleStart=t0, sampleEnd=t1)
+
+    # Spin ratios of the samples, against the lift coefficients' ranges
+    ok = np.isfinite(gamma) & (Rep > 0)
+    ratios = {"variant": info["variant"], "lift": info.get("lift", ""),
+              "samples": int(ok.sum())}
+    for key, v in (("Gamma", gamma[ok]), ("Rep", Rep[ok]), ("ReR", ReR[ok])):
+        for q in QUANTILES:
+            ratios["%s_q%02d" % (key, round(100*q))] = float(np.quantile(v, q))
+    ratios["outsideLoth"] = outside(LOTH_RANGE, Rep[ok], gamma[ok])
+    ratios["outsideOesterleBuiDinh"] = outside(OESTERLE_RANGE, Rep[ok], gamma[ok])
+    ratios["GammaAbove1"] = float(np.mean(gamma[ok] > 1))
+    summary["outsideLiftRange"] = {
+        "Loth": ratios["outsideLoth"],
+        "OesterleBuiDinh": ratios["outsideOesterleBuiDinh"]}.get(
+            info.get("lift"), np.nan)
+    hist = {"gamma": gamma[ok], "Rep": Rep[ok], "ReR": ReR[ok]}
 
     # Wall hits in the window, per parcel and metre travelled
     travelled = info["nParcels"]*summary["meanUx"]*(t1 - t0)
     impacts = s["wallImpacts"]
     model = read_model_statistics(case)
     mstats = window_model_statistics(model, t0, t1) if model is not None else {}
+
+    # Time blocks of the window: impacts per parcel per metre (both walls and
+    # each), impulse-weighted k_n, k_t, with their block-jackknife errors
+    edges_b = np.unique(np.linspace(0, len(sampled) - 1, N_BLOCKS + 1).round().astype(int))
+    bt = time[sampled[edges_b]]
+    bsnap = sampled[edges_b]
+    nb = len(bt) - 1
+    ux_snap = history[:, 2]
+    blocks = {"dist": np.array([
+        info["nParcels"]*np.trapz(ux_snap[bsnap[i]:bsnap[i + 1] + 1],
+                                  time[bsnap[i]:bsnap[i + 1] + 1])
+        for i in range(nb)])}
+    for j, wall in enumerate(WALLS):
+        blocks["imp_" + wall] = np.diff(impacts[bsnap, j])
+    if model is not None:
+        mt = model["Time"]
+        idx = np.maximum(np.searchsorted(mt, bt + EPS_TIME) - 1, 0)
+        for wall in WALLS:
+            for col in ("sumVnIn", "sumVnOut", "sumVtIn", "sumVtOut"):
+                name = "%s_%s" % (wall, col)
+                if name in model:
+                    blocks[name] = np.diff(model[name][idx])
+    for name, fun in (
+            ("impactFrequency", lambda t: (t["imp_lowerWall"] + t["imp_upperWall"])/t["dist"]),
+            ("impactFrequency_lowerWall", lambda t: t["imp_lowerWall"]/t["dist"]),
+            ("impactFrequency_upperWall", lambda t: t["imp_upperWall"]/t["dist"])):
+        summary[name], summary[name + "_se"] = (float(v) for v in jackknife(fun, blocks))
+    if "lowerWall_sumVnIn" in blocks:
+        def impulse(out, inc, walls=WALLS):
+            def f(t):
+                den = sum(t["%s_%s" % (w, inc)] for w in walls)
+                return sum(t["%s_%s" % (w, out)] for w in walls)/den if den > 0 else np.nan
+            return f
+        for key, out_, in_ in (("knImpulse", "sumVnOut", "sumVnIn"),
+                               ("ktImpulse", "sumVtOut", "sumVtIn")):
+            summary[key], summary[key + "_se"] = (
+                float(v) for v in jackknife(impulse(out_, in_), blocks))
+            for wall in WALLS:
+                summary["%s_%s" % (key, wall)], summary["%s_%s_se" % (key, wall)] = (
+                    float(v) for v in jackknife(impulse(out_, in_, (wall,)), blocks))
     for j, wall in enumerate(WALLS):
         summary["impactsPerParcelPerMetre_" + wall] = \
             (impacts[sampled[-1], j] - impacts[sampled[0], j])/travelled
@@ -220,6 +357,8 @@ def analyse(case):
             ok = w > 0
             summary[key + "_mean"] = float(np.sum(w[ok]*v[ok])/w[ok].sum()) \
                 if ok.any() else np.nan
+    summary["spinRatios"] = ratios
+    summary["spinHistograms"] = hist
     return info, prof, summary, history
 
 
@@ -231,15 +370,23 @@ PROFILE_COLUMNS = ["y_over_H", "concentration", "concentration_se",
                    "Ux_rms", "Ux_rms_se", "Uy_rms", "Uy_rms_se", "samples"]
 
 SUMMARY_COLUMNS = [
-    "variant", "wallModel", "roughnessAngle", "spinCoupling", "diameter", "nParcels",
-    "deltaT",
+    "variant", "geometry", "wallModel", "roughnessAngle", "lateralTilt", "lift", "torque",
+    "diameter", "nParcels", "deltaT",
     "sampleStart", "sampleEnd", "snapshots", "samples",
     "upperFraction", "upperFraction_se", "upperFractionEarly", "upperFractionEarly_se",
     "upperFractionLate", "upperFractionLate_se", "UyRms", "UyRms_se",
     "UyRmsEarly", "UyRmsEarly_se", "UyRmsLate", "UyRmsLate_se",
     "meanHeight", "meanHeight_se",
     "meanUx", "meanUx_se", "meanUxEarly", "meanUxEarly_se", "meanUxLate", "meanUxLate_se",
-    "meanSpinSpeed", "meanSpinSpeed_se",
+    "meanSpinSpeed", "meanSpinSpeed_se", "rmsSpinSpeed", "rmsSpinSpeed_se",
+    "UxRms", "UxRms_se", "UzRms", "UzRms_se", "meanUxOverBulk", "meanUxOverBulk_se",
+    "impactFrequency", "impactFrequency_se", "impactFrequency_lowerWall",
+    "impactFrequency_lowerWall_se", "impactFrequency_upperWall",
+    "impactFrequency_upperWall_se",
+    "knImpulse", "knImpulse_se", "ktImpulse", "ktImpulse_se",
+    "knImpulse_lowerWall", "knImpulse_lowerWall_se", "knImpulse_upperWall",
+    "knImpulse_upperWall_se", "ktImpulse_lowerWall", "ktImpulse_lowerWall_se",
+    "ktImpulse_upperWall", "ktImpulse_upperWall_se", "outsideLiftRange",
     "hitsPerParcelPerMetre_lowerWall", "hitsPerParcelPerMetre_upperWall",
     "impactsPerParcelPerMetre_lowerWall", "impactsPerParcelPerMetre_upperWall",
     "kn_mean", "kt_mean", "kn_lowerWall", "kt_lowerWall", "kn_upperWall", "kt_upperWall",
@@ -272,12 +419,7 @@ def write_summary(path, results):
 
 
 def label(info):
-    if info.get("wallModel") == "roughWallInteraction":
-        spin = "" if info.get("spinCoupling") == "yes" else ", no spin forces"
-        if info.get("roughnessAngle", 0) == 0:
-            return "rough-wall model, $\\Delta$ = 0 (smooth)" + spin
-        return "rough-wall model, $\\Delta$ = %g$^\\circ$%s" % (info["roughnessAngle"], spin)
-    return "standardWallInteraction"
+    return info["variant"]
 
 
 def title(d):
@@ -452,6 +594,48 @@ def write_carrier(path, stats):
         w.writerow([fmt(float(v)) for v in stats.values()])
 
 
+RATIO_COLUMNS = (["variant", "lift", "samples"]
+                 + ["%s_q%02d" % (k, round(100*q)) for k in ("Gamma", "Rep", "ReR")
+                    for q in QUANTILES]
+                 + ["outsideLoth", "outsideOesterleBuiDinh", "GammaAbove1"])
+
+
+def write_spin_ratios(path, results):
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(RATIO_COLUMNS)
+        for _, _, s, _ in results:
+            w.writerow([fmt(s["spinRatios"].get(c)) for c in RATIO_COLUMNS])
+
+
+def plot_spin_ratios(path, results, d):
+    fig, axs = plt.subplots(1, 3, figsize=(14, 4.2))
+    bins = {"gamma": np.logspace(-5, 2, 71), "Rep": np.logspace(-1, 3.5, 46),
+            "ReR": np.logspace(-4, 3, 71)}
+    names = {"gamma": "spin ratio $\\Gamma = |\\Omega_{rel}| d/(2|U_{rel}|)$",
+             "Rep": "$Re_p = |U_{rel}| d/\\nu$",
+             "ReR": "$Re_R = |\\Omega_{rel}| d^2/\\nu$"}
+    for info, _, s, _ in results:
+        for ax, key in zip(axs, ("gamma", "Rep", "ReR")):
+            v = s["spinHistograms"][key]
+            ax.hist(v[v > 0], bins=bins[key], histtype="step", density=False,
+                    weights=np.full(np.count_nonzero(v > 0), 1/len(v)), label=label(info))
+    for lo, hi in (OESTERLE_RANGE["Gamma"],):
+        axs[0].axvspan(lo, hi, color="0.85", zorder=0, label="Oesterle & Bui Dinh's fit")
+    axs[1].axvspan(*OESTERLE_RANGE["Rep"], color="0.85", zorder=0)
+    for ax, key in zip(axs, ("gamma", "Rep", "ReR")):
+        ax.set_xscale("log")
+        ax.set_xlabel(names[key])
+        ax.set_ylabel("fraction of samples per bin")
+        ax.grid(alpha=0.3)
+    axs[0].legend(fontsize=7)
+    fig.suptitle("Spin ratio and Reynolds numbers of the beads (mean air flow at the "
+                 "bead), " + title(d), fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+
+
 def print_summary(results):
     print("\nhorizontalChannel: statistics over the sampling window (standard errors in "
           "brackets)")
@@ -498,6 +682,8 @@ def main():
                   carrier_profile(results[0][0]))
     plot_wall_hits(os.path.join(out, "wallHits.png"), results, d)
     plot_spin_up(os.path.join(out, "spinUp.png"), results, d)
+    write_spin_ratios(os.path.join(out, "spinRatios.csv"), results)
+    plot_spin_ratios(os.path.join(out, "spinRatios.png"), results, d)
     write_carrier(os.path.join(out, "carrier.csv"), carrier_statistics(results[0][0]))
     print_summary(results)
 
