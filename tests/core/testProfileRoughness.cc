@@ -150,3 +150,62 @@ TEST(roughnessParameters, BadParametersNameTheirKeyword)
     EXPECT_EQ(keyword(profile(0, 1e-6, 0, 6e-6), false, true, false), "RSm");
     EXPECT_EQ(keyword(profile(0, 1e-6, 0, 6.3e-6), false, true, false), "");
 }
+
+
+// The flank-slope limit 2 pi Rq / RSm <= 1 holds for the Rq that equation
+// (1) uses, also when Rq is derived from Ra or Rz (issue 34): a wall given by
+// Ra or Rz alone with flanks steeper than 45 deg must be rejected.
+// Oracle, typed here: Rq = pi/(2 sqrt 2) Ra = 1.1107207 Ra and
+// Rq = Rz/(2 sqrt 2) = 0.35355339 Rz (a sinusoid), so
+//   Ra = 1e-6, RSm = 6e-6:  2 pi 1.1107e-6/6e-6 = 1.163 > 1  (rejected)
+//   Ra = 1e-6, RSm = 7.2e-6: 0.969 <= 1                      (accepted)
+//   Rz = 3e-6, RSm = 6e-6:  2 pi 1.0607e-6/6e-6 = 1.111 > 1  (rejected)
+//   Rz = 3e-6, RSm = 6.9e-6: 0.966 <= 1                      (accepted)
+TEST(roughnessParameters, FlankSlopeLimitAppliesToRqFromRaOrRz)
+{
+    const auto slope = [](double Rq, double RSm) { return 2*piTyped*Rq/RSm; };
+    const double rqRa = piTyped/(2*std::sqrt(2.0));
+    const double rqRz = 1/(2*std::sqrt(2.0));
+    ASSERT_GT(slope(rqRa*1e-6, 6e-6), 1.0) << "the typed case is steep";
+    ASSERT_LT(slope(rqRa*1e-6, 7.2e-6), 1.0);
+    ASSERT_GT(slope(rqRz*3e-6, 6e-6), 1.0);
+    ASSERT_LT(slope(rqRz*3e-6, 6.9e-6), 1.0);
+
+    EXPECT_EQ(checkProfileRoughness(profile(1e-6, 0, 0, 6e-6), true, false, false).keyword,
+              "RSm") << "Ra alone, flanks steeper than 45 deg";
+    EXPECT_EQ(checkProfileRoughness(profile(1e-6, 0, 0, 7.2e-6), true, false, false).keyword,
+              "") << "Ra alone, gentle flanks";
+    EXPECT_EQ(checkProfileRoughness(profile(0, 0, 3e-6, 6e-6), false, false, true).keyword,
+              "RSm") << "Rz alone, flanks steeper than 45 deg";
+    EXPECT_EQ(checkProfileRoughness(profile(0, 0, 3e-6, 6.9e-6), false, false, true).keyword,
+              "") << "Rz alone, gentle flanks";
+}
+
+
+// Precedence "Rq, else Ra, else Rz" with Ra and Rz both given and no Rq
+// (issue 34). Ra and Rz are chosen inconsistent (not from one sinusoid), so
+// that the two rules give different Rq. Oracle, typed here:
+//   Ra = 1e-6, Rz = 20e-6: Rq = 1.1107207e-6 (from Ra; from Rz it would be
+//   7.0710678e-6); with RSm = 10e-6 the slope is 0.698 (accepted; from Rz
+//   4.44, rejected), Delta(d = 5 um) = atan(0.69789) = 34.91066 deg.
+//   Ra = 3e-6, Rz = 2e-6, RSm = 15e-6: Rq = 3.3322e-6 from Ra, slope 1.396
+//   (rejected; from Rz 0.296, accepted).
+TEST(roughnessParameters, RaTakesPrecedenceOverRzWithoutRq)
+{
+    const ProfileRoughness both = profile(1e-6, 0, 20e-6, 10e-6);
+    EXPECT_NEAR(both.rmsHeight(), 1.1107207345e-6, 1e-15) << "Rq from Ra";
+    EXPECT_EQ(checkProfileRoughness(both, true, false, true).keyword, "")
+        << "the slope of the Rq from Ra is gentle";
+    const RoughnessCorrelation c(both);
+    EXPECT_NEAR(c.angle(5e-6)*180/piTyped, 34.910665, 1e-5);
+    EXPECT_NEAR(c.angleUncached(20e-6)*180/piTyped,
+                std::atan(2*piTyped*1.1107207345e-6/20e-6)*180/piTyped, 1e-9);
+
+    const ProfileRoughness steep = profile(3e-6, 0, 2e-6, 15e-6);
+    EXPECT_NEAR(steep.rmsHeight(), 3.3321622036e-6, 1e-15);
+    EXPECT_EQ(checkProfileRoughness(steep, true, false, true).keyword, "RSm")
+        << "the slope of the Rq from Ra is steeper than 45 deg";
+
+    // And Rq given wins over both
+    EXPECT_EQ(profile(1e-6, 1.5e-6, 20e-6, 10e-6).rmsHeight(), 1.5e-6);
+}

@@ -27,11 +27,12 @@ from .platforms import SPIN
 from .running import mpirun, run
 
 class Injector:
-    """A manualInjection: one parcel (nParticle 1) at each of positions
-    (n, 3) at t = 0 with velocity U0 and diameter d."""
+    """A manualInjection: one parcel (of nParticle particles, default 1) at
+    each of positions (n, 3) at t = 0 with velocity U0 and diameter d."""
 
-    def __init__(self, name, positions, U0, d):
+    def __init__(self, name, positions, U0, d, nParticle=1):
         self.name = name
+        self.nParticle = nParticle
         self.positions = np.asarray(positions, dtype=float).reshape(-1, 3)
         self.U0 = tuple(float(u) for u in U0)
         self.d = float(d)
@@ -39,12 +40,12 @@ class Injector:
     def entry(self, platform):
         """The injectionModels entry in the platform's syntax."""
         if platform.foundation:
-            basis = "nParticle       1;"
+            basis = "nParticle       %r;" % self.nParticle
             size = "sizeDistribution\n    {\n        type        fixedValue;" \
                    "\n        value       %r;\n    }" % self.d
         else:
             basis = "massTotal       0;\n    parcelBasisType fixed;\n" \
-                    "    nParticle       1;"
+                    "    nParticle       %r;" % self.nParticle
             size = "sizeDistribution\n    {\n        type        fixedValue;" \
                    "\n        fixedValueDistribution { value %r; }\n    }" \
                    % self.d
