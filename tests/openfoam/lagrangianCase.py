@@ -283,12 +283,16 @@ def read_particles(path, time_name, fields=("U", "d"), processors=None):
     for name in fields:
         parts = []
         for root in roots:
-            f = os.path.join(root, time_name, "Lagrangian", CLOUD, name)
+            folder = os.path.join(root, time_name, "Lagrangian", CLOUD)
+            f = os.path.join(folder, name)
             if not os.path.exists(f):
                 continue
-            parts.append(fc.internal_field(f, 0)
-                         if "internalField" in fc.read_text(f)
-                         else fc.read_field(f))
+            if "internalField" in fc.read_text(f):
+                # A field written uniform: as many as the coordinates
+                n = len(fc.read_field(os.path.join(folder, "coordinates")))
+                parts.append(fc.internal_field(f, n))
+            else:
+                parts.append(fc.read_field(f))
         out[name] = np.concatenate([p for p in parts if len(p)]) \
             if any(len(p) for p in parts) else np.zeros((0,))
     return out

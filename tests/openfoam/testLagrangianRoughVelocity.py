@@ -233,8 +233,8 @@ def test_energy(args, work):
                         "roughnessAngle 20;", True)):
         case = lc.make_case(os.path.join(work, name), groups, ESCAPE,
                             lowerWall=cond, end_time=0.02, delta_t=1e-3,
-                            cells=(20, 40, 10),
-                            box=((-0.1, 0, -0.05), (0.1, 0.1, 0.05)))
+                            cells=(20, 10, 20),
+                            box=((-0.1, 0, -0.1), (0.1, 0.1, 0.1)))
         run(case)
         p = particles(case, "0.02", fields=("U", "d"))
         U = p["U"]
@@ -287,6 +287,11 @@ def test_closed_box(args, work):
               for r in rows]
     t.check(len(finals) >= 400, "the log holds %d steps of the cloud"
             % len(finals))
+    # Particles on the six walls (the patch columns) during the steps
+    on_walls = sum(sum(int(x) for x in line.split()[2:8])
+                   for r in rows for line in r.strip().split("\n"))
+    t.check(on_walls > n, "the walls were hit (%d particle-wall events "
+            "in the log's tables)" % on_walls)
     bad = [f for f in finals if f[0] != n or any(f[1:])]
     t.check(not bad, "%d particles complete at the end of every step, none "
             "removed (%d steps differ)" % (n, len(bad)))
