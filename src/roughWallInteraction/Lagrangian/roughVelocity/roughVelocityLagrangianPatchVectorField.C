@@ -293,7 +293,7 @@ void Foam::roughVelocityLagrangianPatchVectorField::evaluate
     const vectorField Uf(subMesh.Uf<vectorField>(fraction));
 
     // 2-D: the velocity in the plane (the core keeps it there)
-    const polyMesh& pMesh = subMesh.mesh().mesh();
+    const polyMesh& pMesh = roughWallCompat::polyMeshOf(subMesh.mesh());
     label emptyCmpt = -1;
     if (pMesh.nSolutionD() == 2)
     {
