@@ -111,6 +111,19 @@ Foam::roughVelocityLagrangianPatchVectorField::coeffsDict
     dictionary coeffs(dict);
     coeffs.remove("type");
     coeffs.remove("patchType");
+
+    // The keywords of this condition (type rough's and d), checked here so
+    // that the message names this condition's, not the parcel model's
+    roughWallInput::checkKeywords
+    (
+        coeffs,
+        {
+            "e", "mu0", "muD", "roughnessAngle", "roughness", "lateralTilt",
+            "maxFacetCollisions", "d"
+        },
+        string("type ") + typeName
+    );
+
     return coeffs;
 }
 
@@ -142,7 +155,7 @@ Foam::scalar Foam::roughVelocityLagrangianPatchVectorField::readDiameter
     (
         coeffs, "d",
         {
-            VSMALL, GREAT,
+            1e-9, 1,
             "particle diameter [m] used for every particle instead of the "
             "cloud's field d (default: the field d)"
         }
