@@ -73,26 +73,31 @@ class Group:
 def make_case(path, groups, walls, box=((-0.1, 0, -0.05), (0.1, 0.1, 0.05)),
               cells=(20, 10, 10), end_time=0.05, delta_t=1e-3,
               two_d=False, write_d=True, gravity=False, lowerWall=None,
-              n_procs=1, outer_correctors=False):
+              n_procs=1, outer_correctors=None):
     """Write the case in path (created).  walls: the U condition of the
     walls (a dictionary body, e.g. 'type roughVelocity; e 0.8; ...');
     lowerWall: another condition for lowerWall only.  write_d: the cloud's
-    d field (False: a cloud file without it is not possible for a
-    spherical cloud; the test of the missing field deletes it)."""
+    d field.  outer_correctors N: the carrier solved by incompressibleFluid
+    (at rest, no drag: nothing moves it) with the cloud as an fvModel, N
+    PIMPLE outer correctors and the cloud's outerCorrectors on (the cloud
+    re-tracks each step N times from its start)."""
     os.makedirs(path, exist_ok=True)
     (x0, y0, z0), (x1, y1, z1) = box
     nx, ny, nz = cells
     write(path, "system/blockMeshDict", "dictionary", BLOCK_MESH % dict(
         x0=x0, y0=y0, z0=z0, x1=x1, y1=y1, z1=z1, nx=nx, ny=ny,
         nz=1 if two_d else nz, frontAndBack="empty" if two_d else "wall"))
+    solver = "solver          functions;\n\nsubSolver       " \
+        "incompressibleFluid;\n\nsubSolverTime   0;" \
+        if not outer_correctors else "solver          incompressibleFluid;"
+    functions = ("functions\n{\n    %s\n    {\n        type            "
+                 "kinematicParticleCloud;\n        libs            "
+                 "(\"libLagrangianCloud.so\");\n    }\n}\n" % CLOUD) \
+        if not outer_correctors else ""
     write(path, "system/controlDict", "dictionary", """
 libs            ("libroughWallInteraction.so");
 
-solver          functions;
-
-subSolver       incompressibleFluid;
-
-subSolverTime   0;
+%s
 
 startFrom       startTime;
 
@@ -118,16 +123,10 @@ timePrecision   8;
 
 runTimeModifiable no;
 
-functions
-{
-    %s
-    {
-        type            kinematicParticleCloud;
-        libs            ("libLagrangianCloud.so");
-    }
-}
-""" % (end_time, delta_t, int(round(end_time/delta_t)), CLOUD))
-    write(path, "system/fvSchemes", "dictionary", """
+%s""" % (solver, end_time, delta_t, int(round(end_time/delta_t)),
+           functions))
+    if not outer_correctors:
+        write(path, "system/fvSchemes", "dictionary", """
 ddtSchemes { default none; }
 gradSchemes { default none; }
 divSchemes { default none; }
@@ -135,9 +134,44 @@ laplacianSchemes { default none; }
 interpolationSchemes { default linear; }
 snGradSchemes { default none; }
 """)
-    write(path, "system/fvSolution", "dictionary",
-          "PIMPLE\n{\n    pRefCell 0;\n    pRefValue 0;\n%s}\n"
-          % ("    nOuterCorrectors 2;\n" if outer_correctors else ""))
+        write(path, "system/fvSolution", "dictionary",
+              "PIMPLE\n{\n    pRefCell 0;\n    pRefValue 0;\n}\n")
+    else:
+        write(path, "constant/fvModels", "dictionary",
+              "%s\n{\n    type            kinematicParticleCloud;\n"
+              "    libs            (\"libLagrangianCloud.so\");\n}\n"
+              % CLOUD)
+        write(path, "system/fvSchemes", "dictionary", """
+ddtSchemes { default Euler; }
+gradSchemes { default Gauss linear; }
+divSchemes
+{
+    default none;
+    div(phi,U) Gauss linear;
+    div((nuEff*dev2(T(grad(U))))) Gauss linear;
+}
+laplacianSchemes { default Gauss linear corrected; }
+interpolationSchemes { default linear; }
+snGradSchemes { default corrected; }
+""")
+        write(path, "system/fvSolution", "dictionary", """
+solvers
+{
+    p { solver PCG; preconditioner DIC; tolerance 1e-8; relTol 0; }
+    pFinal { $p; }
+    "U.*" { solver smoothSolver; smoother symGaussSeidel; tolerance 1e-8;
+            relTol 0; }
+}
+
+PIMPLE
+{
+    nOuterCorrectors %d;
+    nCorrectors 1;
+    nNonOrthogonalCorrectors 0;
+    pRefCell 0;
+    pRefValue 0;
+}
+""" % outer_correctors)
     write(path, "system/decomposeParDict", "dictionary",
           "numberOfSubdomains %d;\n\ndecomposer simple;\n\n"
           "distributor none;\n\nsimpleCoeffs\n{\n    n (%d 1 1);\n}\n"
