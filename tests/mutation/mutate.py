@@ -353,6 +353,11 @@ def main():
         fail("the fault list is stale (tests/mutation/faults.json): " +
              "; ".join("%s in %s: %s" % s for s in stale))
     faults = load_faults(args.faults, args.level, only)
+    # A fault may name the platforms whose library contains its code (the
+    # field-based Lagrangian's condition: OpenFOAM-13 and -14 only)
+    if args.level == "openfoam":
+        faults = [f for f in faults
+                  if args.platform in f.get("platforms", [args.platform])]
     if not faults:
         fail("no fault of level %s selected" % args.level)
 

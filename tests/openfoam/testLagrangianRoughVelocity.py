@@ -1,0 +1,417 @@
+#!/usr/bin/env python3
+"""roughVelocity, the rough wall of OpenFOAM-13's and -14's field-based
+Lagrangian (a velocity condition of the cloud, libLagrangianCloud), in a
+kinematicParticle cloud without forces (tests/openfoam/lagrangianCase.py).
+
+--test flatWall: 10000 particles per incidence angle (10, 30, 60 deg,
+    1 m/s, one diameter per angle: 100, 110, 120 um) fired from y = 5 mm at
+    lowerWall (e 0.8, mu0 = muD = 0.4, Delta 8 deg; --roughness gives
+    another roughnessAngle, e.g. a table against the diameter), read at
+    t = 0.05 s when each has hit the wall once.  Checks: no particle lost,
+    every one leaves the wall; mean and sd of k_n and k_t per angle against
+    the oracle (tests/oracle/roughWallOracle.py, an independent numpy Monte
+    Carlo of the operator without spin, 1e6 samples) within 4 combined
+    standard errors; --twoD: the case is 2-D (empty front and back) and
+    U_z = 0 exactly.
+--test smooth: Delta = 0 (roughnessAngle 0) against reboundVelocity's law
+    U'' = -e U_n n + (1 - mu) U_t written in this test, with mu derived by
+    hand for the spin-free facet collision (docs/theory.md, model notes
+    section 4): rolling while |U_t| <= 3.5 mu0 (1 + e)|U_n|, then
+    mu = 2/7; else sliding, mu = muD (1 + e)|U_n|/|U_t|.  The 60 deg group
+    rolls, the 10 deg group slides.  And OpenFOAM's own reboundVelocity
+    with e 0.8 and mu 2/7 run on the 60 deg group gives the same velocities
+    and positions (1e-12).
+--test energy: 4000 particles in random directions towards a wall at rest
+    (speeds 0.2 to 2 m/s, d 50 to 500 um), Delta 20 deg: no particle gains
+    kinetic energy at the wall (|U''| <= |U'|(1 + 1e-12)); with e 1 and
+    mu0 = muD = 0 (no tangential impulse, elastic facets) energy is kept
+    exactly (1e-12).
+--test closedBox: 2000 particles with random velocities under gravity in
+    a box whose six walls are all rough, 400 steps: the particle count at
+    every step of the log and in the written cloud equals the injected one,
+    every particle inside the box; --np 2: the same run split in two.
+--test outerCorrectors: the cloud as an fvModel of incompressibleFluid
+    (air at rest, no drag) with 2 and then 3 PIMPLE outer correctors and the
+    cloud's outerCorrectors on: each step is re-tracked from its start and
+    the condition evaluated again for the same particles; the flat-wall
+    groups (2000 per angle, Delta 8 deg) end identical (bit for bit) in
+    both runs, and their rebounds are random: the draws depend on the
+    particle and the step, not on how often the patch is evaluated.
+--test badInput: e 1.5, muD > mu0, an unknown keyword, a non-positive d,
+    and neither roughnessAngle nor roughness: each stops with a message
+    naming the file, the keyword and the allowed values; a d given in the
+    condition replaces the cloud's (the Delta(d) table then gives every
+    particle the Delta of that d).
+
+SPDX-License-Identifier: GPL-3.0-or-later
+"""
+
+import argparse
+import math
+import os
+import re
+import shutil
+
+import numpy as np
+
+import foamTestCase as t
+import foamcase as fc
+import lagrangianCase as lc
+
+ROUGH = "type roughVelocity; e 0.8; mu0 0.4; muD 0.4; roughnessAngle %s;"
+ESCAPE = "type escapeVelocity;"
+ANGLES = {10: 100e-6, 30: 110e-6, 60: 120e-6}
+
+
+def parse_args():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    t.add_platform_args(p, kinds=False)
+    p.add_argument("--test", required=True,
+                   choices=["flatWall", "smooth", "energy", "closedBox",
+                            "badInput", "outerCorrectors"])
+    p.add_argument("--particles", type=int, default=10000)
+    p.add_argument("--roughness", default="8")
+    p.add_argument("--twoD", action="store_true")
+    p.add_argument("--np", type=int, default=1)
+    return p.parse_args()
+
+
+def incident(angle):
+    a = math.radians(angle)
+    return (math.cos(a), -math.sin(a), 0.0)
+
+
+def flat_wall_groups(n, rng, two_d=False):
+    """One group per angle: x in [-0.04, 0], y = 5 mm, z in [-0.02, 0.02]
+    (0 in 2-D)."""
+    groups = []
+    for angle, d in sorted(ANGLES.items()):
+        pos = np.column_stack([
+            -0.04 + 0.04*rng.random(n), np.full(n, 0.005),
+            np.zeros(n) if two_d else -0.02 + 0.04*rng.random(n)])
+        groups.append(lc.Group("a%d" % angle, pos, incident(angle), d))
+    return groups
+
+
+def run(case, n_procs=1):
+    fc.run(case, ["blockMesh"], "log.blockMesh")
+    if n_procs > 1:
+        fc.run(case, ["decomposePar"], "log.decomposePar")
+        fc.run(case, fc.mpirun(n_procs, ["foamRun", "-parallel"]),
+               "log.foamRun")
+    else:
+        fc.run(case, ["foamRun"], "log.foamRun")
+
+
+def particles(case, time_name, n_procs=1, fields=("U", "d")):
+    out = lc.read_particles(case, time_name, fields,
+                            n_procs if n_procs > 1 else None)
+    return out
+
+
+def diameters(case, time_name, n):
+    """The cloud's d at time_name (written uniform when all are equal)."""
+    path = os.path.join(case, time_name, "Lagrangian", lc.CLOUD, "d")
+    text = fc.read_text(path)
+    m = re.search(r"internalField\s+uniform\s+(%s)" % fc.NUMBER, text)
+    if m:
+        return np.full(n, float(m.group(1)))
+    return fc.internal_field(path)
+
+
+def test_flat_wall(args, work):
+    rng = np.random.default_rng(1)
+    n = args.particles
+    case = lc.make_case(os.path.join(work, "case"),
+                        flat_wall_groups(n, rng, args.twoD), ESCAPE,
+                        lowerWall=ROUGH % args.roughness, two_d=args.twoD)
+    run(case)
+    p = particles(case, "0.05")
+    U = p["U"]
+    t.check(len(U) == 3*n, "all %d particles in the cloud at t = 0.05 s "
+            "(%d)" % (3*n, len(U)))
+    d = diameters(case, "0.05", len(U))
+    t.check(bool(np.all(U[:, 1] > 0)), "every particle leaves the wall "
+            "(U_y > 0; smallest %.3g)" % U[:, 1].min())
+    if args.twoD:
+        t.check(bool(np.all(U[:, 2] == 0)), "2-D: U_z = 0 exactly "
+                "(largest |U_z| %.3g)" % np.abs(U[:, 2]).max())
+
+    table = None
+    if args.roughness.strip().startswith("("):
+        pairs = re.findall(r"\(\s*(%s)\s+(%s)\s*\)" % (fc.NUMBER, fc.NUMBER),
+                           args.roughness)
+        table = (np.array([float(a) for a, _ in pairs]),
+                 np.array([float(b) for _, b in pairs]))
+
+    def delta_of(diameter):
+        # Linear interpolation in d, constant outside (numpy, not the code)
+        if table is None:
+            return float(args.roughness)
+        return float(np.interp(diameter, table[0], table[1]))
+
+    cache = {}
+
+    def reference_of_angle(angle, diameter):
+        delta = delta_of(diameter)
+        key = (round(angle, 6), delta)
+        if key not in cache:
+            cache[key] = t.reference(False, delta, [angle])[angle]
+        return cache[key], delta
+
+    t.check_rebound_statistics(U, d, n, reference_of_angle,
+                               label="roughVelocity: ")
+
+
+def test_smooth(args, work):
+    rng = np.random.default_rng(2)
+    n = 2000
+    groups = flat_wall_groups(n, rng)
+    case = lc.make_case(os.path.join(work, "rough"), groups, ESCAPE,
+                        lowerWall=ROUGH % "0")
+    run(case)
+    p = particles(case, "0.05")
+    U = p["U"]
+    d = diameters(case, "0.05", len(U))
+    e, mu0, muD = 0.8, 0.4, 0.4
+    for angle, dg in sorted(ANGLES.items()):
+        g = np.abs(d - dg) < 1e-9
+        v = np.array(incident(angle))
+        un, ut = -v[1], v[0]     # |U_n|, |U_t| (wall normal +y)
+        rolling = ut <= 3.5*mu0*(1 + e)*un
+        mu = 2/7 if rolling else muD*(1 + e)*un/ut
+        expected = np.array([(1 - mu)*v[0], e*un, 0.0])
+        err = np.abs(U[g] - expected).max()
+        t.check(np.count_nonzero(g) == n and err < 1e-12,
+                "Delta = 0, alpha = %d deg (%s, mu = %.6f by hand): "
+                "U'' = (%.6f, %.6f, 0) for all %d particles "
+                "(largest deviation %.2e < 1e-12)"
+                % (angle, "rolling" if rolling else "sliding", mu,
+                   expected[0], expected[1], np.count_nonzero(g), err))
+    # OpenFOAM's reboundVelocity with the hand-derived mu of the rolling
+    # group gives the same particles
+    g60 = [g for g in groups if g.name == "a60"]
+    cases = {}
+    for name, cond in (("rough60", ROUGH % "0"),
+                       ("rebound60", "type reboundVelocity; e 0.8; "
+                                     "mu %.17g;" % (2/7))):
+        cases[name] = lc.make_case(os.path.join(work, name), g60, ESCAPE,
+                                   lowerWall=cond)
+        run(cases[name])
+    a = particles(cases["rough60"], "0.05", fields=("U", "coordinates"))
+    b = particles(cases["rebound60"], "0.05", fields=("U", "coordinates"))
+    err_U = np.abs(a["U"] - b["U"]).max()
+    err_c = np.abs(a["coordinates"] - b["coordinates"]).max()
+    t.check(len(a["U"]) == n and err_U < 1e-12 and err_c < 1e-12,
+            "Delta = 0 equals reboundVelocity (e 0.8, mu 2/7) at 60 deg: "
+            "velocities (%.1e) and barycentric coordinates (%.1e) of all "
+            "%d particles < 1e-12" % (err_U, err_c, len(a["U"])))
+
+
+def random_towards_wall(rng, n):
+    """Directions with U_y < 0 (uniform on the half sphere), speeds in
+    [0.2, 2] m/s."""
+    v = rng.normal(size=(n, 3))
+    v[:, 1] = -np.abs(v[:, 1]) - 0.05
+    v /= np.linalg.norm(v, axis=1)[:, None]
+    return v*(0.2 + 1.8*rng.random(n))[:, None]
+
+
+def test_energy(args, work):
+    rng = np.random.default_rng(3)
+    n_groups, n = 40, 100
+    groups = []
+    incoming = []
+    for k in range(n_groups):
+        v = random_towards_wall(rng, 1)[0]
+        # Start at y such that the wall is reached within 0.02 s
+        y = min(0.004, 0.8*0.02*(-v[1]))
+        pos = np.column_stack([-0.02 + 0.04*rng.random(n), np.full(n, y),
+                               -0.02 + 0.04*rng.random(n)])
+        groups.append(lc.Group("g%d" % k, pos, v,
+                               50e-6 + 450e-6*rng.random()))
+        incoming.append(np.tile(v, (n, 1)))
+    incoming = np.concatenate(incoming)
+    speed0 = {g.name: np.linalg.norm(g.U0) for g in groups}
+    for name, cond, exact in (
+            ("dissipative", "type roughVelocity; e 0.8; mu0 0.4; muD 0.3; "
+                            "roughnessAngle 20;", False),
+            ("elastic", "type roughVelocity; e 1; mu0 0; muD 0; "
+                        "roughnessAngle 20;", True)):
+        case = lc.make_case(os.path.join(work, name), groups, ESCAPE,
+                            lowerWall=cond, end_time=0.02, delta_t=1e-3,
+                            cells=(20, 10, 20),
+                            box=((-0.1, 0, -0.1), (0.1, 0.1, 0.1)))
+        run(case)
+        p = particles(case, "0.02", fields=("U", "d"))
+        U = p["U"]
+        t.check(len(U) == len(incoming),
+                "%s: all %d particles kept" % (name, len(incoming)))
+        d = diameters(case, "0.02", len(U))
+        # The particles' incoming speeds, by group (their diameters)
+        speed_in = np.empty(len(U))
+        for g in groups:
+            speed_in[np.abs(d - g.d) < 1e-12] = speed0[g.name]
+        speed_out = np.linalg.norm(U, axis=1)
+        hit = U[:, 1] > 0
+        t.check(bool(np.all(hit)), "%s: every particle hit the wall and "
+                "left it (%d of %d)" % (name, np.count_nonzero(hit), len(U)))
+        ratio = speed_out/speed_in
+        if exact:
+            t.check(bool(np.all(np.abs(ratio - 1) < 1e-12)),
+                    "%s (e 1, no friction): |U''| = |U'| to 1e-12 for "
+                    "every particle (largest |ratio - 1| %.1e)"
+                    % (name, np.abs(ratio - 1).max()))
+        else:
+            t.check(bool(np.all(ratio <= 1 + 1e-12)),
+                    "%s: no particle gains energy at the wall at rest "
+                    "(largest |U''|/|U'| %.6f)" % (name, ratio.max()))
+
+
+def test_closed_box(args, work):
+    rng = np.random.default_rng(4)
+    n = 2000
+    pos = 0.005 + 0.09*rng.random((n, 3))
+    groups = []
+    for k in range(20):
+        sl = slice(k*n//20, (k + 1)*n//20)
+        groups.append(lc.Group("g%d" % k, pos[sl],
+                               random_towards_wall(rng, 1)[0]*3,
+                               100e-6 + 20e-6*k))
+    case = lc.make_case(os.path.join(work, "box"), groups,
+                        "type roughVelocity; e 0.9; mu0 0.3; muD 0.2; "
+                        "roughnessAngle 10;",
+                        box=((0, 0, 0), (0.1, 0.1, 0.1)), cells=(10, 10, 10),
+                        end_time=0.4, delta_t=1e-3, gravity=True,
+                        n_procs=args.np)
+    run(case, args.np)
+    log = fc.read_text(os.path.join(case, "log.foamRun"))
+    # The cloud's table: after "complete inInternalMesh <patches>
+    # toBeRemoved", rows of counts; the last row of each step: all complete
+    rows = re.findall(r"complete inInternalMesh[^\n]*\n((?:\s+\d+(?:\s+\d+)+"
+                      r"\n)+)", log)
+    finals = [[int(x) for x in r.strip().split("\n")[-1].split()]
+              for r in rows]
+    t.check(len(finals) >= 400, "the log holds %d steps of the cloud"
+            % len(finals))
+    # Particles on the six walls (the patch columns) during the steps
+    on_walls = sum(sum(int(x) for x in line.split()[2:8])
+                   for r in rows for line in r.strip().split("\n"))
+    t.check(on_walls > n, "the walls were hit (%d particle-wall events "
+            "in the log's tables)" % on_walls)
+    bad = [f for f in finals if f[0] != n or any(f[1:])]
+    t.check(not bad, "%d particles complete at the end of every step, none "
+            "removed (%d steps differ)" % (n, len(bad)))
+    time_name = "0.4"
+    p = particles(case, time_name, args.np, fields=("U", "coordinates",
+                                                    "cell"))
+    t.check(len(p["U"]) == n, "%d particles in the written cloud at t = 0.4 "
+            "s%s" % (len(p["U"]), " (%d processors)" % args.np
+                     if args.np > 1 else ""))
+    c = p["coordinates"]
+    t.check(bool(np.all(c >= -1e-9)) and bool(np.all(p["cell"] >= 0)),
+            "every particle in a cell with barycentric coordinates >= 0")
+    hits = np.count_nonzero(np.any(np.abs(p["U"]) > 0, axis=1))
+    t.check(hits == n, "velocities finite and non-zero (%d)" % hits)
+
+
+def test_outer_correctors(args, work):
+    rng = np.random.default_rng(6)
+    n = 2000
+    groups = flat_wall_groups(n, rng)
+    results = {}
+    for n_outer in (2, 3):
+        case = lc.make_case(os.path.join(work, "outer%d" % n_outer), groups,
+                            ESCAPE, lowerWall=ROUGH % "8", end_time=0.04,
+                            outer_correctors=n_outer)
+        run(case)
+        log = fc.read_text(os.path.join(case, "log.foamRun"))
+        solves = log.count("Solving cloud")
+        t.check(solves == 40*n_outer, "%d outer correctors: the cloud is "
+                "solved %d times in 40 steps (%d)"
+                % (n_outer, 40*n_outer, solves))
+        results[n_outer] = particles(case, "0.04",
+                                     fields=("U", "coordinates"))
+    a, b = results[2], results[3]
+    t.check(len(a["U"]) == 3*n and len(b["U"]) == 3*n,
+            "all %d particles kept" % (3*n))
+    sd = float(np.std(a["U"][:, 1]))
+    t.check(sd > 0.01, "the rebounds are random (sd of U_y %.3f)" % sd)
+    err_U = float(np.abs(a["U"] - b["U"]).max())
+    err_c = float(np.abs(a["coordinates"] - b["coordinates"]).max())
+    t.check(err_U == 0 and err_c == 0,
+            "2 and 3 outer correctors (each step re-tracked from its start, "
+            "the condition evaluated again for the same particles) give "
+            "identical particles: the draws are a function of particle and "
+            "step (largest differences: U %.1e, coordinates %.1e)"
+            % (err_U, err_c))
+
+
+def run_expect_error(case, label, patterns):
+    rc, _ = fc.run(case, ["foamRun"], "log.foamRun", check_rc=False)
+    text = fc.read_text(os.path.join(case, "log.foamRun"))
+    found = [p for p in patterns if re.search(p, text)]
+    t.check(rc != 0 and len(found) == len(patterns),
+            "%s: foamRun stops (rc %s), the message names %s%s"
+            % (label, rc, ", ".join(patterns),
+               "" if len(found) == len(patterns) else
+               " -- missing: %s; log tail:\n%s"
+               % ([p for p in patterns if p not in found], text[-1500:])))
+
+
+def test_bad_input(args, work):
+    rng = np.random.default_rng(5)
+    groups = flat_wall_groups(20, rng)
+    base = "type roughVelocity; mu0 0.4; roughnessAngle 8; "
+    cases = (
+        ("e", base + "e 1.5;", [r"\be\b", r"\[0, 1\]", r"0/Lagrangian/cloud/U",
+                                "lowerWall"]),
+        ("muD", base + "e 0.8; muD 0.6;", [r"\bmuD\b", r"mu0", r"0/Lagrangian/cloud/U"]),
+        ("unknown", base + "e 0.8; roughnesAngle 3;",
+         [r"roughnesAngle", r"type roughVelocity", r"closest: roughnessAngle",
+          r"0/Lagrangian/cloud/U"]),
+        ("d", base + "e 0.8; d -1e-4;", [r"\bd\b", r"particle diameter",
+                                         r"\[1e-09, 1\]",
+                                         r"0/Lagrangian/cloud/U"]),
+        ("noRoughness", "type roughVelocity; e 0.8; mu0 0.4;",
+         [r"roughnessAngle", r"roughness", r"0/Lagrangian/cloud/U"]),
+    )
+    for name, cond, patterns in cases:
+        case = lc.make_case(os.path.join(work, name), groups, ESCAPE,
+                            lowerWall=cond, end_time=0.002)
+        fc.run(case, ["blockMesh"], "log.blockMesh")
+        run_expect_error(case, name, patterns)
+    # d in the condition replaces the cloud's field: with the table
+    # ((100e-6 0) (300e-6 0)) -> Delta 0 and a d of 200 um the 60 deg group
+    # rolls as in the smooth test, whatever the cloud's d
+    case = lc.make_case(os.path.join(work, "dGiven"), groups, ESCAPE,
+                        lowerWall="type roughVelocity; e 0.8; mu0 0.4; "
+                                  "roughnessAngle ((100e-6 20) (150e-6 20) "
+                                  "(200e-6 0) (300e-6 0)); d 200e-6;")
+    run(case)
+    U = particles(case, "0.05")["U"]
+    d = diameters(case, "0.05", len(U))
+    g = np.abs(d - ANGLES[60]) < 1e-9
+    expected = np.array([(1 - 2/7)*0.5, 0.8*math.sin(math.radians(60)), 0])
+    err = np.abs(U[g] - expected).max()
+    t.check(np.count_nonzero(g) == 20 and err < 1e-12,
+            "d 200e-6 in the condition: the table's Delta(200 um) = 0 for "
+            "the 120 um particles (smooth rolling rebound, deviation %.1e)"
+            % err)
+
+
+def main():
+    args = parse_args()
+    work = os.path.abspath(args.work)
+    for entry in os.listdir(work):
+        path = os.path.join(work, entry)
+        if os.path.isdir(path):
+            shutil.rmtree(path)
+    {"flatWall": test_flat_wall, "smooth": test_smooth,
+     "energy": test_energy, "closedBox": test_closed_box,
+     "badInput": test_bad_input,
+     "outerCorrectors": test_outer_correctors}[args.test](args, work)
+
+
+if __name__ == "__main__":
+    t.main(main)
