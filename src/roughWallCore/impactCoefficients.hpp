@@ -132,10 +132,12 @@ inline void checkBounds
     }
     if (!(m.muD >= 0 && m.muD <= m.mu0))
     {
+        std::ostringstream bound;
+        bound.precision(10);
+        bound << "[0, mu0] (mu0 = " << m.mu0 << ")";
         throw CoefficientOutOfRange
         (
-            "muD", ImpactArgument::angle, impact.angleDeg, m.muD,
-            "[0, mu0] (mu0 = " + std::to_string(m.mu0) + ")"
+            "muD", ImpactArgument::angle, impact.angleDeg, m.muD, bound.str()
         );
     }
 }
