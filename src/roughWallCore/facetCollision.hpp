@@ -20,6 +20,7 @@
 // paper's model) or a function of the facet impact (impactCoefficients.hpp).
 #pragma once
 
+#include "fastMath.hpp"
 #include "roughWallBase.hpp"
 #include "roughWallLimits.hpp"
 
@@ -53,14 +54,16 @@ struct FacetImpact
 //- The impact of velocity v on the facet of unit outward normal n (v.n < 0):
 //  beta = atan2(-v.n, |v - (v.n) n|), the angle between v and the facet plane
 //  (alpha + gamma in 2-D), which the no-slip/sliding decision of a sphere
-//  without spin sees (|slip| = |v.n|/tan(beta)), and the normal speed -v.n
+//  without spin sees (|slip| = |v.n|/tan(beta)), and the normal speed -v.n.
+//  Both arguments of the arc tangent are >= 0: the core's libm-free atan2
+//  (fastMath.hpp) applies
 inline FacetImpact facetImpact(const Vec3& v, const Vec3& n)
 {
     const double normalSpeed = -v.dot(n);
     const double tangentialSpeed = (v + normalSpeed*n).norm();
     return
     {
-        limits::radToDeg(std::atan2(normalSpeed, tangentialSpeed)),
+        limits::radToDeg(fastMath::atan2FirstQuadrant(normalSpeed, tangentialSpeed)),
         normalSpeed
     };
 }
