@@ -708,7 +708,7 @@ def restitution_statistics(alpha_deg, Delta_deg, e=0.8, mu0=0.4, muD=None,
 
 def single_facet_quadrature(alpha_deg, Delta_deg, e=0.8, mu0=0.4, muD=None,
                             speed=1.0, fallback=False, cells=20000,
-                            refine=400):
+                            refine=400, spin=False):
     """Mean k_n and k_t of one facet collision of a sphere without spin,
     v = speed (cos alpha, -sin alpha, 0) on the wall y = 0, averaged over
     P(gamma, alpha) (eq. 1.3, facet_tilt_pdf) truncated to gamma < pi/2:
@@ -718,7 +718,9 @@ def single_facet_quadrature(alpha_deg, Delta_deg, e=0.8, mu0=0.4, muD=None,
     the rebound's v.N, is integrated again on `refine` subcells. e, mu0, muD
     as for facet_collision (numbers or functions of the facet impact).
     fallback=True: where the rebound still moves into the wall, one more
-    collision with the mean wall (the operator with max_facet=1). The error
+    collision with the mean wall (the operator with max_facet=1); spin=True:
+    that collision sees the spin the first one gave (a cloud with spin, the
+    core's withSpin = true; the sphere arrives without spin). The error
     is below 1e-7 for the tests' functions (checked against 4x the cells).
     Returns one dict per angle: alpha_deg, mean_kn, mean_kt, mass (the
     integral of the truncated pdf, 1 up to the quadrature error), p_wallward
@@ -737,12 +739,15 @@ def single_facet_quadrature(alpha_deg, Delta_deg, e=0.8, mu0=0.4, muD=None,
         m = g.size
         v = np.tile([speed*math.cos(a), -speed*math.sin(a), 0.0], (m, 1))
         n = np.stack([-np.sin(g), np.cos(g), np.zeros(m)], axis=1)
-        res = facet_collision(v, None, n, 1.0, e, mu0, muD)
+        res = facet_collision(v, np.zeros((m, 3)) if spin else None, n, 1.0,
+                              e, mu0, muD)
         v2 = res.v
         into = v2[:, 1] < 0
         if fallback and np.any(into):
             N = np.tile([0.0, 1.0, 0.0], (int(into.sum()), 1))
-            v2[into] = facet_collision(v2[into], None, N, 1.0, e, mu0, muD).v
+            v2[into] = facet_collision(
+                v2[into], res.omega[into] if spin else None, N, 1.0,
+                e, mu0, muD).v
         return v2, into, res.no_slip
 
     out = []

@@ -15,9 +15,10 @@ constants mu0 = muD = 0.3.
    60 deg, Delta 8: mean k_n and k_t within 2e-6 of the oracle's quadrature
    (the oracle's kinks are not resolved: its error is below 1e-6).
 2. roughWallStats --method montecarlo --recollide --max-collisions 1
-   (the core's operator: one facet, then the mean wall) at 20, 45 deg:
-   within 4 standard errors (+1e-6) of the oracle's quadrature with
-   fallback=True; 400 000 samples, fixed seed.
+   (the core's operator with spin: one facet, then the mean wall, which
+   sees the spin of the first collision) at 20, 45 deg: within 4 standard
+   errors (+1e-6) of the oracle's quadrature with fallback=True, spin=True;
+   400 000 samples, fixed seed.
 3. e(normal speed) by quadrature at 15, 50 deg: 2e-6.
 Control: the oracle's quadrature with the constants at the incidence angle
 (e(alpha), mu0(alpha), muD(alpha)) must differ from roughWallStats by more
@@ -105,7 +106,7 @@ def main():
             "--alpha", "20,45", "--method", "montecarlo", "--recollide",
             "--max-collisions", "1", "--samples", "400000", "--seed", "31"])
         oracle = rwo.single_facet_quadrature(alphas, 8, e, mu0, muD,
-                                             fallback=True)
+                                             fallback=True, spin=True)
         for row, o, a in zip(rows, oracle, alphas):
             for key in ("mean_kn", "mean_kt"):
                 c.within(f"operator {key} alpha={a} (p_wallward "
