@@ -20,12 +20,6 @@ Control: the constants of the tables at 20 deg (e 0.85, muD 0.22) give a
 quadrature that the parcels must miss by more than 4 standard errors at one
 angle at least (the functions are used, not their value at one angle).
 
-Status: written for the adapter's reading of e, mu0, muD as Function1s,
-which is not done yet; not registered in tests/openfoam/CMakeLists.txt
-until it is (it would fail: the adapter takes only constants). Register as
-    roughwall_openfoam_test(${platform} impactDependent.wallImpact
-        testImpactDependent.py ARGS --parcels 10000)
-
 Usage: testImpactDependent.py --platform openfoam13|openfoam14|openfoam1912
            [--parcels N] [--work DIR]
 
