@@ -20,8 +20,16 @@ Control: the constants of the tables at 20 deg (e 0.85, muD 0.22) give a
 quadrature that the parcels must miss by more than 4 standard errors at one
 angle at least (the functions are used, not their value at one angle).
 
+With --badInput: bad functions stop the run (non-zero exit, no crash):
+  - e table reaching 1.2: FOAM FATAL IO ERROR at start-up naming the patch
+    entry, "e = 1.2 at angle = 90 deg" and the range [0, 1];
+  - eArgument with a constant e: FOAM FATAL IO ERROR naming eArgument;
+  - muD a polynomial 0.1 + 0.01 beta with mu0 0.4 (above mu0 beyond 30 deg,
+    not checkable at start-up): FOAM FATAL ERROR at the first such facet
+    collision naming the patch, "muD = ", "at angle = " and "[0, mu0]".
+
 Usage: testImpactDependent.py --platform openfoam13|openfoam14|openfoam1912
-           [--parcels N] [--work DIR]
+           [--parcels N] [--badInput] [--work DIR]
 
 SPDX-License-Identifier: GPL-3.0-or-later
 """
@@ -77,12 +85,52 @@ def parse_args():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     t.add_platform_args(p, kinds=False)
     p.add_argument("--parcels", type=int, default=10000)
+    p.add_argument("--badInput", action="store_true")
     return p.parse_args()
+
+
+def bad_input(platform, args):
+    case = t.wall_impact_case(platform, os.path.join(args.work, "badCase"),
+                              "kinematic", parcels=100, settings=SETTINGS)
+    case.mesh(1)
+    polynomial = "polynomial (0.1 0.01)" if platform.foundation \
+        else "polynomial ((0.1 0) (0.01 1))"
+    table = foam_table(E_TABLE)
+    cases = [
+        ("e table above 1", SETTINGS.replace(table, foam_table(
+            [(0, 0.9), (90, 1.2)])),
+         ["FOAM FATAL IO ERROR", "lowerWall|upperWall",
+          "e = 1.2 at angle = 90 deg", "[0, 1]"]),
+        ("eArgument with a constant e", SETTINGS.replace(
+            "e               %s;" % table,
+            "e               0.8;\n            eArgument normalSpeed;"),
+         ["FOAM FATAL IO ERROR", "eArgument", "e as a Function1"]),
+        ("muD polynomial above mu0", SETTINGS.replace(
+            foam_table(MUD_TABLE), polynomial),
+         ["FOAM FATAL ERROR", "lowerWall|upperWall", "muD = ",
+          "at angle = ", "[0, mu0]"]),
+    ]
+    for i, (name, text, expected) in enumerate(cases):
+        t.check(text != SETTINGS, "%s: the settings were changed" % name)
+        case.write_settings(text)
+        log = "log.bad%d" % i
+        rc, _ = case.solve(log, check_rc=False)
+        out = case.log(log)
+        missing = [e for e in expected if e not in out]
+        crashed = rc < 0 or "Segmentation fault" in out \
+            or "Floating point exception" in out
+        t.check(rc != 0 and not missing and not crashed,
+                "%s: rc %d, %s" % (name, rc, "missing %s" % missing
+                                   if missing else "message has %s"
+                                   % expected))
 
 
 def test():
     args = parse_args()
     platform = fc.Platform(args.platform)
+    if args.badInput:
+        bad_input(platform, args)
+        return
     case = t.wall_impact_case(platform, os.path.join(args.work, "case"),
                               "kinematic", parcels=args.parcels,
                               settings=SETTINGS)
