@@ -150,8 +150,11 @@ bool Foam::facetImpactCoefficients::isFunction
     {
         return true;
     }
+    // A Function1 is a type name followed by its data ("table ((0 0.9)
+    // ...)"): anything else (a number, a lone word, two numbers) is read
+    // as a number and refused with the constant's message and range
     const ITstream& is = dict.lookup(keyword);
-    return !(is.size() == 1 && is[0].isNumber());
+    return is.size() > 1 && is[0].isWord();
 }
 
 
