@@ -9,6 +9,8 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <functional>
 #include <limits>
 #include <map>
 #include <set>
@@ -48,6 +50,20 @@ Model (defaults: glass beads on steel, the paper's d_p = 110 um case):
   --e E            normal restitution of a facet, 0 <= E <= 1      (0.8)
   --mu0 M          static friction, M >= 0                         (0.4)
   --mud M          dynamic friction, 0 <= M <= mu0                 (0.4)
+  e, mu0, mud as functions of the facet impact (docs/roughWallInteraction.md),
+  each instead of its constant:
+  --e-table FILE   pairs "argument value" (two columns, or OpenFOAM's
+                   ((x y) ...); '#' and '//' comments), argument ascending,
+                   linear in between, constant beyond the ends
+  --e-polynomial C0,C1,...  e = C0 + C1 x + C2 x^2 + ...
+  --mu0-table, --mu0-polynomial, --mud-table, --mud-polynomial: the same
+                   for the friction; their argument is the facet impact angle
+  --e-argument A   angle (facet impact angle [deg], (0, 90]) or normalSpeed
+                   (normal impact speed on the facet [m/s])      (angle)
+  --speed V        incident speed [m/s], with --e-argument normalSpeed (1)
+                   Bounds (e in [0, 1], mu0 >= 0, 0 <= mud <= mu0) are
+                   checked at every table node and on a 0.01 deg (or V/9000)
+                   grid at start-up, and at every collision.
   --spin A         incident spin A_Omega = r Omega'_z / V'_x,
                    Omega_z along t x N (any real)                   (0)
   --alpha LIST     incidence angles in (0, 90]: a,b,c and/or
@@ -267,6 +283,184 @@ std::vector<double> diameterList(const std::string& text)
     return ds;
 }
 
+//- A table file: pairs of numbers, parentheses and commas as spaces, '#'
+//  and '//' comments; the argument strictly ascending
+roughWall::LinearTable readTable(const std::string& option, const std::string& file)
+{
+    std::ifstream in(file);
+    if (!in)
+    {
+        fail(option + " cannot read " + quoted(file));
+    }
+    std::vector<double> numbers;
+    std::string line;
+    for (int lineNo = 1; std::getline(in, line); ++lineNo)
+    {
+        for (const char* comment : {"#", "//"})
+        {
+            const auto at = line.find(comment);
+            if (at != std::string::npos) line.erase(at);
+        }
+        for (char& c : line)
+        {
+            if (c == '(' || c == ')' || c == ',' || c == ';') c = ' ';
+        }
+        std::istringstream words(line);
+        std::string word;
+        while (words >> word)
+        {
+            numbers.push_back
+            (
+                number(option + " " + file + " line " + std::to_string(lineNo), word)
+            );
+        }
+    }
+    if (numbers.size() < 2 || numbers.size() % 2)
+    {
+        fail(option + " " + quoted(file) + " needs pairs 'argument value' (at least one), "
+             "got " + std::to_string(numbers.size()) + " numbers");
+    }
+    roughWall::LinearTable table;
+    for (std::size_t i = 0; i < numbers.size(); i += 2)
+    {
+        if (!table.points.empty() && !(numbers[i] > table.points.back().first))
+        {
+            std::ostringstream message;
+            message << option << " " << quoted(file) << ": the arguments must ascend, got "
+                    << numbers[i] << " after " << table.points.back().first;
+            fail(message.str());
+        }
+        table.points.emplace_back(numbers[i], numbers[i + 1]);
+    }
+    return table;
+}
+
+//- C0,C1,... : C0 + C1 x + C2 x^2 + ... (Horner)
+std::function<double(double)> readPolynomial(const std::string& option, const std::string& text)
+{
+    std::vector<double> c;
+    for (const std::string& item : split(text, ','))
+    {
+        c.push_back(number(option, item));
+    }
+    if (c.empty())
+    {
+        fail(option + " needs coefficients C0,C1,...");
+    }
+    return [c](double x)
+    {
+        double y = 0;
+        for (auto i = c.rbegin(); i != c.rend(); ++i) y = y*x + *i;
+        return y;
+    };
+}
+
+//- --e-table, --e-polynomial, ... into o.model.impact, and their bounds
+//  checked on the table nodes and a fine grid of the argument
+void readImpactDependence(Options& o, std::map<std::string, std::string>& given)
+{
+    const auto has = [&](const std::string& option) { return given.count(option) > 0; };
+    ImpactDependence& f = o.model.impact;
+    std::vector<double> eNodes;
+    const auto read = [&]
+    (
+        const std::string& name,            // e, mu0, mud
+        std::function<double(double)>& function,
+        std::vector<double>* nodes
+    )
+    {
+        const std::string table = "--" + name + "-table";
+        const std::string polynomial = "--" + name + "-polynomial";
+        if (has(table) && has(polynomial))
+        {
+            fail("give " + table + " or " + polynomial + ", not both");
+        }
+        if ((has(table) || has(polynomial)) && has("--" + name))
+        {
+            fail("give --" + name + " (a constant) or " + (has(table) ? table : polynomial)
+                 + " (a function), not both");
+        }
+        if (has(table))
+        {
+            const roughWall::LinearTable t = readTable(table, given[table]);
+            for (const auto& point : t.points) nodes->push_back(point.first);
+            function = t;
+        }
+        else if (has(polynomial))
+        {
+            function = readPolynomial(polynomial, given[polynomial]);
+        }
+    };
+    read("e", f.e, &eNodes);
+    read("mu0", f.mu0, &f.angleKinks);
+    read("mud", f.muD, &f.angleKinks);
+
+    if (has("--e-argument"))
+    {
+        const std::string& a = given["--e-argument"];
+        if (a == "angle") f.eArgument = roughWall::ImpactArgument::angle;
+        else if (a == "normalSpeed") f.eArgument = roughWall::ImpactArgument::normalSpeed;
+        else fail("--e-argument must be angle or normalSpeed, got " + quoted(a));
+        if (!f.e) fail("--e-argument needs --e-table or --e-polynomial");
+    }
+    const bool ofSpeed = f.eArgument == roughWall::ImpactArgument::normalSpeed;
+    if (has("--speed"))
+    {
+        f.speed = number("--speed", given["--speed"]);
+        if (!(f.speed > 0)) fail("--speed must be an incident speed > 0 [m/s], got " + given["--speed"]);
+        if (!ofSpeed) fail("--speed needs --e-argument normalSpeed");
+    }
+    if (!ofSpeed)
+    {
+        f.angleKinks.insert(f.angleKinks.end(), eNodes.begin(), eNodes.end());
+    }
+    if (!f.any())
+    {
+        return;
+    }
+
+    // The bounds at the nodes and on a grid: the per-collision check stays
+    // (a polynomial can leave them between the grid points)
+    std::vector<double> angles = f.angleKinks;
+    std::vector<double> speeds = ofSpeed ? eNodes : std::vector<double>{};
+    for (int i = 0; i <= 9000; ++i)
+    {
+        angles.push_back(std::max(1e-3, 0.01*i));
+        speeds.push_back(f.speed*std::max(1e-6, i/9000.0));
+    }
+    const Model& model = o.model;
+    try
+    {
+        for (const double a : angles)
+        {
+            roughWall::FacetImpact impact;
+            impact.angleDeg = a;
+            impact.normalSpeed = ofSpeed ? f.speed : std::sin(a*(roughWall::pi/180));
+            ModelCoefficients{&model}({impact.angleDeg, impact.normalSpeed/f.speed});
+        }
+        for (const double w : ofSpeed ? speeds : std::vector<double>{})
+        {
+            ModelCoefficients{&model}({90, w/f.speed});
+        }
+    }
+    catch (const roughWall::CoefficientOutOfRange& error)
+    {
+        // The options that gave the coefficient (and mu0 for muD <= mu0)
+        const auto optionOf = [&](const std::string& name)
+        {
+            for (const char* kind : {"-table", "-polynomial"})
+            {
+                if (has("--" + name + kind)) return "--" + name + kind;
+            }
+            return "--" + name;
+        };
+        const std::string& c = error.coefficient();
+        const std::string options = c == "muD"
+            ? optionOf("mud") + " with " + optionOf("mu0") : optionOf(c);
+        fail(options + ": " + error.what());
+    }
+}
+
 } // namespace
 
 Options parseCommandLine(int argc, const char* const argv[])
@@ -277,7 +471,10 @@ Options parseCommandLine(int argc, const char* const argv[])
         "--Delta", "--e", "--mu0", "--mud", "--spin", "--alpha", "--method",
         "--samples", "--seed", "--max-collisions", "--tolerance", "--threads",
         "--pdf", "--bins", "--range", "--plot", "--output", "--digits",
-        "--Ra", "--Rq", "--Rz", "--RSm", "--diameter", "--d", "--profile", "--length"
+        "--Ra", "--Rq", "--Rz", "--RSm", "--diameter", "--d", "--profile", "--length",
+        "--e-table", "--mu0-table", "--mud-table",
+        "--e-polynomial", "--mu0-polynomial", "--mud-polynomial",
+        "--e-argument", "--speed"
     };
     static const std::set<std::string> flags{"--recollide", "--lateral", "--help", "-h"};
 
@@ -531,6 +728,7 @@ Options parseCommandLine(int argc, const char* const argv[])
                 << "friction), got mud = " << m.muD << " > mu0 = " << m.mu0;
         fail(message.str());
     }
+    readImpactDependence(o, given);
     if (has("--spin"))
     {
         o.model.AOmega = number("--spin", given["--spin"]);
@@ -623,6 +821,12 @@ Options parseCommandLine(int argc, const char* const argv[])
         if (o.pdfOf != Coefficient::kn && o.alphaDeg[0] == 90)
         {
             fail("--pdf " + k + " is undefined at --alpha 90 (V'_x = 0): use an angle below 90");
+        }
+        if (o.model.impact.any())
+        {
+            fail("--pdf needs constant e, mu0, mud (the change of variables (2.8) "
+                 "has no derivative of a table); give the statistics of a table "
+                 "without --pdf");
         }
         if (!(o.model.Delta > 0) && !o.monteCarlo.recollide && !o.monteCarlo.lateral)
         {

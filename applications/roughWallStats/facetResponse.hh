@@ -61,7 +61,9 @@ public:
         Vec3 v = in_.velocity();
         Vec3 w = in_.spin(model_.AOmega);
         const Vec3 n(-std::sin(gamma), std::cos(gamma), 0);
-        const Regime r = roughWall::collideWithFacet<true>(v, w, n, 1.0, model_.material);
+        const Regime r = model_.impact.any()
+            ? roughWall::collideWithFacet<true>(v, w, n, 1.0, ModelCoefficients{&model_})
+            : roughWall::collideWithFacet<true>(v, w, n, 1.0, model_.material);
         if (regime)
         {
             *regime = r;
@@ -79,16 +81,20 @@ public:
     Regime regime(double gamma) const
     {
         const double b = in_.alpha + gamma;
-        return std::abs(std::cos(b) + a_) <= K_*std::sin(b)
+        return std::abs(std::cos(b) + a_) <= K(b)*std::sin(b)
             ? Regime::noSlip : Regime::sliding;
     }
 
     //- Closed form in the given regime (continued beyond its range, so that
     //  a piece's end values can be taken with the piece's own regime)
+    //  With functions of the impact the coefficients are taken at b but their
+    //  derivatives are left out (dk is then not the derivative: the pdf,
+    //  which needs it, refuses such models)
     Value analytic(double gamma, Regime regime) const
     {
-        const double e = model_.material.e;
         const double b = in_.alpha + gamma;
+        const FacetMaterial material = materialAt(model_, b);
+        const double e = material.e;
         const double cb = std::cos(b), sb = std::sin(b);
         const double cg = std::cos(gamma), sg = std::sin(gamma);
 
@@ -103,7 +109,7 @@ public:
         else
         {
             const double f =
-                model_.material.muD*(1 + e)*(cb + a_ >= 0 ? 1 : -1);
+                material.muD*(1 + e)*(cb + a_ >= 0 ? 1 : -1);
             u = cb - f*sb;
             du = -sb - f*cb;
             rho = a_ - 2.5*f*sb;
@@ -126,9 +132,35 @@ public:
 
     //- The tilts in (gLo, gHi) where the regime changes, ascending: the
     //  solutions of cos b + a = +-K sin b, i.e. sqrt(1+K^2) cos(b -+ atan K) = -a
+    //  With functions of the impact: by scanning the regime on 4096 intervals
+    //  and bisection
     std::vector<double> regimeBoundaries(double gLo, double gHi) const
     {
         std::vector<double> gammas;
+        if (model_.impact.any())
+        {
+            const int n = 4096;
+            double g0 = gLo;
+            Regime r0 = regime(g0);
+            for (int i = 1; i <= n; ++i)
+            {
+                const double g1 = i == n ? gHi : gLo + (gHi - gLo)*i/n;
+                const Regime r1 = regime(g1);
+                if (r1 != r0)
+                {
+                    double lo = g0, hi = g1;
+                    for (int k = 0; k < 60 && hi > lo; ++k)
+                    {
+                        const double mid = 0.5*(lo + hi);
+                        (regime(mid) == r0 ? lo : hi) = mid;
+                    }
+                    gammas.push_back(0.5*(lo + hi));
+                }
+                g0 = g1;
+                r0 = r1;
+            }
+            return gammas;
+        }
         const double R = std::sqrt(1 + K_*K_);
         if (std::abs(a_) > R)
         {
@@ -158,10 +190,21 @@ public:
 
 private:
 
+    //- (7/2) mu0 (1 + e) at the facet impact of b [rad]
+    double K(double b) const
+    {
+        if (!model_.impact.any())
+        {
+            return K_;
+        }
+        const FacetMaterial m = materialAt(model_, b);
+        return 3.5*m.mu0*(1 + m.e);
+    }
+
     Model model_;
     Incidence in_;
     double a_;   //!< r Omega'_z / V
-    double K_;   //!< (7/2) mu0 (1 + e)
+    double K_;   //!< (7/2) mu0 (1 + e) of the constants
 };
 
 } // namespace roughWallStats

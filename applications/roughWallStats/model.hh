@@ -8,10 +8,14 @@
 #pragma once
 
 #include "facetCollision.hpp"
+#include "impactCoefficients.hpp"
 #include "restitutionCoefficients.hpp"
 #include "gaussianMass.hpp"
 
 #include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
 
 namespace roughWallStats
 {
@@ -20,13 +24,67 @@ using roughWall::FacetMaterial;
 using roughWall::Regime;
 using roughWall::Vec3;
 
+//- e, mu0, muD as functions of the facet impact (--e-table, --mu0-polynomial,
+//  ...): a function that is empty takes its constant from Model::material
+struct ImpactDependence
+{
+    std::function<double(double)> e, mu0, muD;
+    roughWall::ImpactArgument eArgument = roughWall::ImpactArgument::angle;
+    double speed = 1;                  //!< incident speed V [m/s], for e(normal speed)
+    std::vector<double> angleKinks;    //!< table nodes of mu0, muD, e(angle) [deg]
+
+    bool any() const { return e || mu0 || muD; }
+};
+
 //- The rough wall and the incident spin
 struct Model
 {
-    FacetMaterial material{0.8, 0.4, 0.4};   //!< e, mu0, muD
+    FacetMaterial material{0.8, 0.4, 0.4};   //!< e, mu0, muD (the constants)
     double Delta = 8*roughWall::pi/180;      //!< sd of the facet tilt [rad]
     double AOmega = 0;                       //!< r Omega'_z / V'_x, Omega_z along t x N
+    ImpactDependence impact;                 //!< functions of the impact, if any
 };
+
+//- The core's coefficient policy of a Model with functions of the impact:
+//  the velocities here are in units of V, so the normal speed is scaled by
+//  V before e sees it. Bounds are checked at every call (throws
+//  roughWall::CoefficientOutOfRange).
+struct ModelCoefficients
+{
+    const Model* model;
+
+    FacetMaterial operator()(const roughWall::FacetImpact& unitImpact) const
+    {
+        const ImpactDependence& f = model->impact;
+        roughWall::FacetImpact impact = unitImpact;
+        impact.normalSpeed *= f.speed;
+        const double eArgument = roughWall::argumentOf(impact, f.eArgument);
+        const FacetMaterial m
+        {
+            f.e ? f.e(eArgument) : model->material.e,
+            f.mu0 ? f.mu0(impact.angleDeg) : model->material.mu0,
+            f.muD ? f.muD(impact.angleDeg) : model->material.muD
+        };
+        roughWall::checkBounds(m, impact, f.eArgument);
+        return m;
+    }
+};
+
+//- The coefficients of a facet impact at b = alpha + gamma [rad]: the
+//  angle between the velocity and the facet plane is min(b, pi - b) (beyond
+//  pi/2 the facet is met from its other side), the normal speed sin(b) V
+//  (the model's constants without functions)
+inline FacetMaterial materialAt(const Model& model, double b)
+{
+    if (!model.impact.any())
+    {
+        return model.material;
+    }
+    roughWall::FacetImpact impact;
+    impact.angleDeg = std::min(b, roughWall::pi - b)*(180/roughWall::pi);
+    impact.normalSpeed = std::sin(b);
+    return ModelCoefficients{&model}(impact);
+}
 
 //- Incidence angle alpha in (0, 90] deg. At exactly 90 deg cos(alpha) is 0
 //  (not 6e-17): V'_x = 0 there and k_t, k_Omega are undefined.

@@ -44,17 +44,22 @@ Outcome WallHitSampler::operator()(Uniform01& uniform01) const
 
     if (settings_.recollide)
     {
-        roughWall::RoughWallParameters p;
-        p.material = model_.material;
-        p.roughnessAngle = model_.Delta;
-        p.lateralTilt = settings_.lateral;
-        p.maxFacetCollisions = settings_.maxFacetCollisions;
         // In-plane model: a 2-D wall (no sideways tilt, no out-of-plane motion)
         const Vec3 emptyDirection = settings_.lateral ? Vec3::Zero() : Vec3(0, 0, 1);
-        const roughWall::RoughWallReport report = roughWall::collideWithRoughWall<true>
-        (
-            v, w, N, 1.0, p, uniform01, emptyDirection
-        );
+        const auto hit = [&](auto coefficients)
+        {
+            roughWall::RoughWallParametersOf<decltype(coefficients)> p;
+            p.material = coefficients;
+            p.roughnessAngle = model_.Delta;
+            p.lateralTilt = settings_.lateral;
+            p.maxFacetCollisions = settings_.maxFacetCollisions;
+            return roughWall::collideWithRoughWall<true>
+            (
+                v, w, N, 1.0, p, uniform01, emptyDirection
+            );
+        };
+        const roughWall::RoughWallReport report = model_.impact.any()
+            ? hit(ModelCoefficients{&model_}) : hit(model_.material);
         outcome.facetCollisions = report.facetCollisions;
         outcome.noSlip = report.noSlip;
         outcome.fallback = report.fallback;
@@ -78,7 +83,9 @@ Outcome WallHitSampler::operator()(Uniform01& uniform01) const
         }
         if (v.dot(n) < 0)
         {
-            const Regime regime = roughWall::collideWithFacet<true>(v, w, n, 1.0, model_.material);
+            const Regime regime = model_.impact.any()
+                ? roughWall::collideWithFacet<true>(v, w, n, 1.0, ModelCoefficients{&model_})
+                : roughWall::collideWithFacet<true>(v, w, n, 1.0, model_.material);
             outcome.noSlip = regime == Regime::noSlip;
             break;
         }

@@ -32,6 +32,17 @@ std::vector<double> smoothPieces(const FacetResponse& response, const TiltRange&
     {
         breaks.push_back(g);
     }
+    // The kinks of tabulated coefficients: the table nodes, beta = alpha + gamma
+    const double alpha = response.incidence().alpha;
+    for (const double betaDeg : response.model().impact.angleKinks)
+    {
+        const double g = betaDeg*(roughWall::pi/180) - alpha;
+        if (g > range.lo && g < range.hi)
+        {
+            breaks.push_back(g);
+        }
+    }
+    std::sort(breaks.begin(), breaks.end());
     breaks.push_back(range.hi);
 
     // Zeros of V''_y within each regime piece

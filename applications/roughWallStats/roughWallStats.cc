@@ -28,6 +28,8 @@
 #include <spawn.h>
 #include <sstream>
 #include <sys/wait.h>
+#include <exception>
+#include <mutex>
 #include <thread>
 #include <tuple>
 #include <unistd.h>
@@ -64,9 +66,14 @@ std::string plotScript()
 std::string modelLabel(const Options& o)
 {
     std::ostringstream label;
-    label << "Delta = " << o.DeltaDeg << " deg, e = " << o.model.material.e
-          << ", mu0 = " << o.model.material.mu0 << ", muD = " << o.model.material.muD
-          << ", A_Omega = " << o.model.AOmega;
+    const ImpactDependence& f = o.model.impact;
+    label << "Delta = " << o.DeltaDeg << " deg, e = ";
+    if (f.e) label << "e(" << roughWall::name(f.eArgument) << ")"; else label << o.model.material.e;
+    label << ", mu0 = ";
+    if (f.mu0) label << "mu0(angle)"; else label << o.model.material.mu0;
+    label << ", muD = ";
+    if (f.muD) label << "muD(angle)"; else label << o.model.material.muD;
+    label << ", A_Omega = " << o.model.AOmega;
     if (o.monteCarlo.recollide) label << ", recollide";
     if (o.monteCarlo.lateral) label << ", lateral tilt";
     return label.str();
@@ -165,14 +172,27 @@ int runStatistics(const Options& o)
 {
     std::vector<Statistics> rows(o.alphaDeg.size());
     std::atomic<std::size_t> next{0};
+    // An error in a thread (a coefficient function out of its bounds) is
+    // passed on to main, which reports it
+    std::mutex errorMutex;
+    std::exception_ptr error;
     const auto work = [&]()
     {
-        for (std::size_t i; (i = next++) < rows.size();)
+        try
         {
-            const Incidence incidence = Incidence::fromDegrees(o.alphaDeg[i]);
-            rows[i] = o.method == Method::quadrature
-                ? quadratureStatistics(o.model, incidence, o.quadrature)
-                : monteCarloStatistics(o.model, incidence, o.monteCarlo);
+            for (std::size_t i; (i = next++) < rows.size();)
+            {
+                const Incidence incidence = Incidence::fromDegrees(o.alphaDeg[i]);
+                rows[i] = o.method == Method::quadrature
+                    ? quadratureStatistics(o.model, incidence, o.quadrature)
+                    : monteCarloStatistics(o.model, incidence, o.monteCarlo);
+            }
+        }
+        catch (...)
+        {
+            const std::lock_guard<std::mutex> lock(errorMutex);
+            if (!error) error = std::current_exception();
+            next = rows.size();
         }
     };
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
@@ -184,6 +204,10 @@ int runStatistics(const Options& o)
     for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work);
     work();
     for (std::thread& t : pool) t.join();
+    if (error)
+    {
+        std::rethrow_exception(error);
+    }
 
     bool normalIncidence = false;
     for (const Statistics& s : rows)

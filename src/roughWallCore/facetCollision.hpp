@@ -15,15 +15,21 @@
 //
 // "Rolling/no-slip" and "sliding" name the regimes; OpenFOAM's "stick" means
 // deposition and has nothing to do with them.
+//
+// e, mu0, muD come from a coefficient policy: FacetMaterial (constants, the
+// paper's model) or a function of the facet impact (impactCoefficients.hpp).
 #pragma once
 
+#include "fastMath.hpp"
 #include "roughWallBase.hpp"
+#include "roughWallLimits.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace roughWall
 {
@@ -37,6 +43,30 @@ struct FacetMaterial
 };
 
 enum class Regime { noSlip, sliding };
+
+//- What a coefficient function of the impact sees
+struct FacetImpact
+{
+    double angleDeg = 90;     //!< beta [deg], (0, 90]
+    double normalSpeed = 0;   //!< -v.n, > 0
+};
+
+//- The impact of velocity v on the facet of unit outward normal n (v.n < 0):
+//  beta = atan2(-v.n, |v - (v.n) n|), the angle between v and the facet plane
+//  (alpha + gamma in 2-D), which the no-slip/sliding decision of a sphere
+//  without spin sees (|slip| = |v.n|/tan(beta)), and the normal speed -v.n.
+//  Both arguments of the arc tangent are >= 0: the core's libm-free atan2
+//  (fastMath.hpp) applies
+inline FacetImpact facetImpact(const Vec3& v, const Vec3& n)
+{
+    const double normalSpeed = -v.dot(n);
+    const double tangentialSpeed = (v + normalSpeed*n).norm();
+    return
+    {
+        limits::radToDeg(fastMath::atan2FirstQuadrant(normalSpeed, tangentialSpeed)),
+        normalSpeed
+    };
+}
 
 //- Collide a sphere (velocity v, angular velocity w, radius r) with a facet
 //  of unit outward normal n; v.n < 0 is the caller's precondition. Without
@@ -89,6 +119,25 @@ Regime collideWithFacet
         w -= (2.5/radius)*n.cross(jt);
     }
     return regime;
+}
+
+//- The same with coefficients that depend on the impact: Coefficients is a
+//  policy with FacetMaterial operator()(const FacetImpact&) const, asked
+//  once per facet collision for the impact of v on this facet. Constant
+//  coefficients (FacetMaterial) take the overload above, unchanged.
+template<bool withSpin, class Coefficients>
+std::enable_if_t<!std::is_same_v<Coefficients, FacetMaterial>, Regime>
+collideWithFacet
+(
+    Vec3& v,
+    Vec3& w,
+    const Vec3& n,
+    double radius,
+    const Coefficients& coefficients
+)
+{
+    const FacetMaterial material = coefficients(facetImpact(v, n));
+    return collideWithFacet<withSpin>(v, w, n, radius, material);
 }
 
 } // namespace roughWall

@@ -41,14 +41,20 @@
 namespace roughWall
 {
 
-//- Parameters of a rough wall
-struct RoughWallParameters
+//- Parameters of a rough wall. Coefficients: the coefficient policy of the
+//  facet collisions (facetCollision.hpp): FacetMaterial for constants, or
+//  e, mu0, muD as functions of the facet impact (impactCoefficients.hpp)
+template<class Coefficients>
+struct RoughWallParametersOf
 {
-    FacetMaterial material;
+    Coefficients material;
     double roughnessAngle = 0;     //!< Delta [rad], in [0, pi/4]
     bool lateralTilt = false;      //!< isotropic 3-D roughness (never in 2-D)
     int maxFacetCollisions = limits::defaultMaxFacetCollisions;  //!< bound per wall hit
 };
+
+//- Constant e, mu0, muD: the paper's model
+using RoughWallParameters = RoughWallParametersOf<FacetMaterial>;
 
 //- What one wall hit did, for statistics
 struct RoughWallReport
@@ -231,14 +237,14 @@ inline void leaveMeanWall(Vec3& velocity, const Vec3& wallNormal)
 //  angular velocity (untouched when withSpin is false), emptyDirection the unit
 //  normal of a 2-D case's plane (zero in 3-D). A particle not moving into the
 //  wall (velocity.dot(wallNormal) >= 0) is returned unchanged.
-template<bool withSpin, class Uniform01>
+template<bool withSpin, class Uniform01, class Coefficients>
 RoughWallReport collideWithRoughWall
 (
     Vec3& velocity,
     Vec3& spin,
     const Vec3& wallNormal,
     double radius,
-    const RoughWallParameters& p,
+    const RoughWallParametersOf<Coefficients>& p,
     Uniform01& uniform01,
     const Vec3& emptyDirection = Vec3::Zero()
 )

@@ -85,6 +85,65 @@ def case_badInput(binary, work):
     check("--Delta" in result.stdout and "--pdf" in result.stdout, "--help prints the usage")
 
 
+def case_impactDependent(binary, work):
+    """e, mu0, mud as functions of the facet impact (issue 31): bad input
+    exits 2 with a message naming the option, the argument and the value;
+    a table of one constant value gives the constant's statistics exactly
+    (oracle: the constant run of the same tool, whose own oracles are
+    tests/roughWallStats and oracle.roughWallStats); a table that falls
+    with the angle lowers mean k_n below e = its largest value."""
+    os.makedirs(work, exist_ok=True)
+
+    def write(name, text):
+        path = os.path.join(work, name)
+        with open(path, "w") as f:
+            f.write(text)
+        return path
+
+    e_above = write("eAbove.dat", "0 0.9\n45 1.2\n90 0.8\n")
+    mud_above = write("mudAbove.dat", "# angle mud\n0 0.2\n60 0.5\n90 0.1\n")
+    descending = write("descending.dat", "0 0.9\n50 0.8\n40 0.7\n")
+    odd = write("odd.dat", "0 0.9 45\n")
+    for args, words in [
+            (["--e-table", e_above], ["--e-table", "e = 1.2", "angle = 45"]),
+            (["--mud-table", mud_above, "--mu0", "0.4"],
+             ["--mud-table with --mu0", "muD = 0.5", "angle = 60", "[0, mu0] (mu0 = 0.4)"]),
+            (["--mu0-polynomial", "0.4,-0.01", "--mud", "0"],
+             ["--mu0-polynomial", "mu0 = -", "outside [0, inf)"]),
+            (["--mu0-polynomial", "0.4,-0.01"],
+             ["--mud with --mu0-polynomial", "muD = 0.4", "outside [0, mu0]"]),
+            (["--e-polynomial", "0.5,0.1", "--e-argument", "normalSpeed",
+              "--speed", "10"], ["--e-polynomial", "normalSpeed", "outside [0, 1]"]),
+            (["--e-table", descending], ["--e-table", "ascend", "40 after 50"]),
+            (["--e-table", odd], ["--e-table", "pairs"]),
+            (["--e-table", os.path.join(work, "missing.dat")], ["--e-table", "cannot read"]),
+            (["--e", "0.8", "--e-table", e_above], ["--e", "not both"]),
+            (["--e-table", e_above, "--e-polynomial", "0.8"], ["--e-table", "not both"]),
+            (["--e-argument", "speed", "--e-polynomial", "0.8"], ["--e-argument", "'speed'"]),
+            (["--speed", "3"], ["--speed", "normalSpeed"]),
+            (["--e-polynomial", "0.8", "--pdf", "kn", "--alpha", "10"], ["--pdf", "constant"])]:
+        result = run(binary, *args, expect=2)
+        check(all(w in result.stderr for w in words) and result.stdout == "",
+              "%s -> exit 2, message has %s (got %r)"
+              % (" ".join(args), words, result.stderr.strip()))
+
+    flat = write("flat.dat", "((0 0.7) (90 0.7))\n")
+    args = ["--alpha", "5,30,80", "--mu0", "0.3", "--mud", "0.2", "--digits", "17"]
+    _, constant = table(run(binary, *args, "--e", "0.7").stdout)
+    _, tabulated = table(run(binary, *args, "--e-table", flat).stdout)
+    for a, b in zip(constant, tabulated):
+        for key in ("mean_kn", "mean_kt", "sd_kn", "sd_kt"):
+            x, y = float(a[key]), float(b[key])
+            check(abs(x - y) <= 1e-9*abs(x),
+                  "alpha %s: %s of a flat table %r = the constant's %r"
+                  % (a["alpha_deg"], key, y, x))
+    falling = write("falling.dat", "0 0.9\n90 0.5\n")
+    _, rows = table(run(binary, "--alpha", "30", "--e-table", falling).stdout)
+    _, rows9 = table(run(binary, "--alpha", "30", "--e", "0.9").stdout)
+    check(float(rows[0]["mean_kn"]) < float(rows9[0]["mean_kn"]) - 0.05,
+          "a falling e(angle) lowers mean k_n below the constant e = 0.9")
+
+
 def significant_digits(text):
     """Significant digits written in a %g field"""
     mantissa = text.lower().split("e")[0].lstrip("-").replace(".", "")

@@ -95,32 +95,14 @@ Foam::roughWallPatchSettings::types[5] =
 {
     {"rough", {
         {
+            // e, mu0, muD: numbers, or Function1s of the facet impact
             "e",
-            ROUGHWALL_READ(rough_.material.e, roughWallInput::readScalar(d, "e",
-                {0, 1, "normal restitution coefficient of a facet collision"})),
-            ROUGHWALL_WRITE(s.rough_.material.e)
+            [](settings& s, const dictionary& d) { s.readCoefficients(d); },
+            ROUGHWALL_WRITE(s.coefficientDescription("e").c_str())
         },
-        {
-            "mu0",
-            ROUGHWALL_READ(rough_.material.mu0, roughWallInput::readScalar(d, "mu0",
-                {0, GREAT, "static friction coefficient (no-slip criterion)"})),
-            ROUGHWALL_WRITE(s.rough_.material.mu0)
-        },
-        {
-            // Sliding friction above the static one could reverse the slip
-            "muD",
-            ROUGHWALL_READ(rough_.material.muD, roughWallInput::readScalarOrDefault
-            (
-                d, "muD",
-                {
-                    0, s.rough_.material.mu0,
-                    "dynamic (sliding) friction coefficient; must not exceed "
-                    "mu0 (default: mu0)"
-                },
-                s.rough_.material.mu0
-            )),
-            ROUGHWALL_WRITE(s.rough_.material.muD)
-        },
+        {"mu0", nullptr, ROUGHWALL_WRITE(s.coefficientDescription("mu0").c_str())},
+        {"muD", nullptr, ROUGHWALL_WRITE(s.coefficientDescription("muD").c_str())},
+        {"eArgument", nullptr, nullptr},     // read with e
         {
             "roughnessAngle",
             [](settings& s, const dictionary& d) { s.readRoughness(d); },
@@ -214,6 +196,62 @@ void Foam::roughWallPatchSettings::readRoughness(const dictionary& dict)
     {
         readProfile(dict);
     }
+}
+
+
+void Foam::roughWallPatchSettings::readCoefficients(const dictionary& dict)
+{
+    if (!facetImpactCoefficients::anyFunction(dict))
+    {
+        if (dict.found("eArgument"))
+        {
+            roughWallInput::fatalBadEntry
+            (
+                dict, "eArgument", "only with e as a Function1",
+                "what e is a function of: angle (facet impact angle [deg]) "
+                "or normalSpeed (normal impact speed [m/s])",
+                "e is a constant"
+            );
+        }
+        rough_.material.e = roughWallInput::readScalar(dict, "e",
+            {0, 1, "normal restitution coefficient of a facet collision"});
+        rough_.material.mu0 = roughWallInput::readScalar(dict, "mu0",
+            {0, GREAT, "static friction coefficient (no-slip criterion)"});
+        // Sliding friction above the static one could reverse the slip
+        rough_.material.muD = roughWallInput::readScalarOrDefault
+        (
+            dict, "muD",
+            {
+                0, rough_.material.mu0,
+                "dynamic (sliding) friction coefficient; must not exceed "
+                "mu0 (default: mu0)"
+            },
+            rough_.material.mu0
+        );
+        return;
+    }
+    impact_ = std::make_shared<const facetImpactCoefficients>
+    (
+        dict,
+        word(patchName_)
+    );
+    rough_.material = impact_->constants();
+}
+
+
+Foam::string Foam::roughWallPatchSettings::coefficientDescription
+(
+    const word& name
+) const
+{
+    if (impact_)
+    {
+        return impact_->description(name);
+    }
+    OStringStream os;
+    os  << (name == "e" ? rough_.material.e
+          : name == "mu0" ? rough_.material.mu0 : rough_.material.muD);
+    return os.str();
 }
 
 

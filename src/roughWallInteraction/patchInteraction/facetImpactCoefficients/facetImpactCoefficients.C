@@ -1,0 +1,221 @@
+/*---------------------------------------------------------------------------*\
+  roughWallInteraction: Derevich's rough-wall collision model for OpenFOAM
+  Copyright (C) 2026 roughWallInteraction authors
+  SPDX-License-Identifier: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
+
+#include "facetImpactCoefficients.H"
+#include "foamCompat.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- A number, or a Function1 (null with the number in value)
+Foam::autoPtr<Foam::Function1<Foam::scalar>> readCoefficient
+(
+    const Foam::dictionary& dict,
+    const Foam::word& keyword,
+    Foam::scalar& value
+)
+{
+    using namespace Foam;
+    if (!Foam::facetImpactCoefficients::isFunction(dict, keyword))
+    {
+        value = dict.lookup(keyword)[0].number();
+        return autoPtr<Function1<scalar>>();
+    }
+    return roughWallCompat::newScalarFunction1(keyword, dict);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::facetImpactCoefficients::facetImpactCoefficients
+(
+    const dictionary& dict,
+    const word& patchName
+)
+:
+    patchName_(patchName),
+    eArgument_(roughWall::ImpactArgument::angle),
+    checkPerCall_(false)
+{
+    e_ = readCoefficient(dict, "e", constants_.e);
+    mu0_ = readCoefficient(dict, "mu0", constants_.mu0);
+    if (dict.found("muD"))
+    {
+        muD_ = readCoefficient(dict, "muD", constants_.muD);
+    }
+    else if (mu0_.valid())
+    {
+        muD_.reset(mu0_->clone().ptr());
+    }
+    else
+    {
+        constants_.muD = constants_.mu0;
+    }
+
+    if (dict.found("eArgument"))
+    {
+        const word a(dict.lookup("eArgument"));
+        if (a == "normalSpeed")
+        {
+            eArgument_ = roughWall::ImpactArgument::normalSpeed;
+        }
+        else if (a != "angle")
+        {
+            FatalIOErrorInFunction(dict)
+                << "eArgument " << a << " in " << dict.name()
+                << ": allowed are angle, normalSpeed" << exit(FatalIOError);
+        }
+        if (!e_.valid())
+        {
+            FatalIOErrorInFunction(dict)
+                << "eArgument in " << dict.name()
+                << " needs e as a Function1 (e is the constant "
+                << constants_.e << ")" << exit(FatalIOError);
+        }
+    }
+
+    // Tables: the bounds at their nodes (linear in between, constant
+    // beyond the ends). Anything else: at every call
+    std::vector<double> nodes[3];
+    const autoPtr<Function1<scalar>>* functions[3] = {&e_, &mu0_, &muD_};
+    for (int i = 0; i < 3; ++i)
+    {
+        if (functions[i]->valid())
+        {
+            tmp<scalarField> x;
+            if (roughWallCompat::tableNodes((*functions[i])(), x))
+            {
+                nodes[i].assign(x().begin(), x().end());
+            }
+            else
+            {
+                checkPerCall_ = true;
+            }
+        }
+    }
+    if (!checkPerCall_)
+    {
+        if (nodes[1].empty() && nodes[2].empty())
+        {
+            nodes[1].push_back(45);   // constant friction: one argument
+        }
+        const auto valueAt = [&](const std::string& name, double x)
+        {
+            const autoPtr<Function1<scalar>>& f =
+                name == "e" ? e_ : name == "mu0" ? mu0_ : muD_;
+            const scalar c =
+                name == "e" ? constants_.e
+              : name == "mu0" ? constants_.mu0 : constants_.muD;
+            return f.valid() ? f->value(x) : c;
+        };
+        try
+        {
+            if (nodes[0].empty()) nodes[0].push_back(45);
+            roughWall::checkTableBounds
+            (
+                nodes[0], nodes[1], nodes[2], eArgument_, valueAt
+            );
+        }
+        catch (const roughWall::CoefficientOutOfRange& error)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Patch " << patchName_ << " in " << dict.name() << ": "
+                << error.what() << " (keyword " << error.coefficient()
+                << ")" << exit(FatalIOError);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::facetImpactCoefficients::isFunction
+(
+    const dictionary& dict,
+    const word& keyword
+)
+{
+    if (!dict.found(keyword))
+    {
+        return false;
+    }
+    if (dict.isDict(keyword))
+    {
+        return true;
+    }
+    // A Function1 is a type name followed by its data ("table ((0 0.9)
+    // ...)"): anything else (a number, a lone word, two numbers) is read
+    // as a number and refused with the constant's message and range
+    const ITstream& is = dict.lookup(keyword);
+    return is.size() > 1 && is[0].isWord();
+}
+
+
+bool Foam::facetImpactCoefficients::anyFunction(const dictionary& dict)
+{
+    return
+        isFunction(dict, "e") || isFunction(dict, "mu0")
+     || isFunction(dict, "muD");
+}
+
+
+Foam::string Foam::facetImpactCoefficients::description
+(
+    const word& name
+) const
+{
+    const autoPtr<Function1<scalar>>& f =
+        name == "e" ? e_ : name == "mu0" ? mu0_ : muD_;
+    OStringStream os;
+    if (f.valid())
+    {
+        os  << f->type() << " of the facet impact "
+            << (
+                   name == "e"
+                && eArgument_ == roughWall::ImpactArgument::normalSpeed
+                 ? "normal speed [m/s]" : "angle [deg]"
+               );
+    }
+    else
+    {
+        os  << (name == "e" ? constants_.e
+              : name == "mu0" ? constants_.mu0 : constants_.muD);
+    }
+    return os.str();
+}
+
+
+roughWall::FacetMaterial Foam::facetImpactCoefficients::at
+(
+    const roughWall::FacetImpact& impact
+) const
+{
+    const scalar eArgument = roughWall::argumentOf(impact, eArgument_);
+    const roughWall::FacetMaterial m
+    {
+        e_.valid() ? e_->value(eArgument) : constants_.e,
+        mu0_.valid() ? mu0_->value(impact.angleDeg) : constants_.mu0,
+        muD_.valid() ? muD_->value(impact.angleDeg) : constants_.muD
+    };
+    if (checkPerCall_)
+    {
+        try
+        {
+            roughWall::checkBounds(m, impact, eArgument_);
+        }
+        catch (const roughWall::CoefficientOutOfRange& error)
+        {
+            FatalErrorInFunction
+                << "Patch " << patchName_ << ": " << error.what()
+                << exit(FatalError);
+        }
+    }
+    return m;
+}
