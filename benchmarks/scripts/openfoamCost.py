@@ -172,6 +172,8 @@ def main():
                    help="only: instruction counts of a short run per variant")
     p.add_argument("--callgrind-parcels", type=int, default=2000)
     p.add_argument("--callgrind-end-time", type=float, default=0.05)
+    p.add_argument("--variants", help="only these variants, comma-separated "
+                   "(standard, rebound,\nrough, rough-base, ...)")
     p.add_argument("--profile", action="store_true",
                    help="only: perf profiles of the rough and standard runs")
     p.add_argument("--tutorial", action="store_true",
@@ -197,6 +199,9 @@ def main():
     if not args.platform:
         sys.exit("openfoamCost.py: --platform is needed (or --plot-only)")
     runner = Runner(args)
+    if args.variants:
+        runner.variants = tuple(v for v in runner.variants
+                                if v in args.variants.split(","))
     runner.check_environment()
     if args.profile:
         profile(runner, args)
