@@ -105,15 +105,15 @@ TEST(EnvelopeAngleTable, rangeFromTheProfile)
     SampledProfile p = randomTrace(1001, 2e-6, 3);
     p.x[500] += 1e-6;   // largest spacing 3e-6
     const EnvelopeAngleTable a(p);
-    EXPECT_DOUBLE_EQ(a.dMin(), 3e-6);
-    EXPECT_DOUBLE_EQ(a.dMax(), 1e-3);
+    EXPECT_NEAR(a.dMin(), 3e-6, 1e-15);
+    EXPECT_NEAR(a.dMax(), 1e-3, 1e-15);
     const EnvelopeAngleTable b(p, 1e-5, 1);
     EXPECT_DOUBLE_EQ(b.dMin(), 1e-5);
-    EXPECT_DOUBLE_EQ(b.dMax(), 1e-3);
+    EXPECT_NEAR(b.dMax(), 1e-3, 1e-15);
     SampledProfile q = randomTrace(1000, 2e-6, 3);
     q.ends = ProfileEnds::periodic;
     q.period = 2e-3;
-    EXPECT_DOUBLE_EQ(EnvelopeAngleTable(q).dMax(), 2e-4);
+    EXPECT_NEAR(EnvelopeAngleTable(q).dMax(), 2e-4, 1e-15);
 }
 
 
