@@ -3,8 +3,9 @@ brute force, independently of the library (rollingSphereEnvelope.hpp).
 
 The profile: a long wave (800 um, slope amplitude 0.05) plus a short one
 (40 um, slope amplitude 0.35) with a random-phase ripple and a linear trend
-of slope 0.02, sampled every 1 um over 4 mm, written in micrometres with a
-header line and a '# units um um' line (the reader's documented format).
+of slope 0.1 (a tilted specimen, 5.7 deg: the levelling must remove it),
+sampled every 1 um over 4 mm, written in micrometres with a header line and
+a '# units um um' line (the reader's documented format).
 Spheres of 100-120 um bridge the short wave, so Delta(d) there is well below
 its small-sphere value: a wrong diameter shows in the rebound statistics.
 
@@ -38,7 +39,7 @@ def profile():
     for wavelength in (23e-6, 61e-6, 170e-6):
         z += 0.15e-6 * np.sin(2 * math.pi * x / wavelength
                               + rng.uniform(0, 2 * math.pi))
-    z += 0.02 * x
+    z += 0.1 * x
     return x, z
 
 
