@@ -19,7 +19,9 @@ CPU per hit; the tabulation's CPU time as the log states it.  With
 --callgrind also valgrind's instruction counts of a short run: the model's
 correct() per call (one per wall hit), inclusive.
 
-Writes benchmarks/results/profile-cost.<platform>.csv and .md.
+Writes benchmarks/results/<output>.<platform>.csv (default output:
+profile-cost; --rounds 0 --callgrind --output profile-callgrind: the
+instruction counts alone).
 
 Usage: etc/openfoamEnv openfoam13 /usr/bin/python3 \\
            benchmarks/scripts/profileCost.py --platform openfoam13 \\
@@ -130,6 +132,8 @@ def main():
     p.add_argument("--callgrind", action="store_true")
     p.add_argument("--callgrind-parcels", type=int, default=2000)
     p.add_argument("--callgrind-end-time", type=float, default=0.05)
+    p.add_argument("--output", default="profile-cost",
+                   help="stem of the result file in benchmarks/results")
     p.add_argument("--work", default=os.path.join(bc.ROOT, "build",
                                                   "profileCost"))
     args = p.parse_args()
@@ -144,6 +148,7 @@ def main():
 
     case, _ = make_case(runner, work, args.parcels, 1, args.end_time)
     delta = prepare(case, None)
+    print("Delta of the trace at 110 um: %.4f deg" % delta, flush=True)
     rows = []
     variants = ("rough", "profile")
     for rnd in range(args.rounds):
@@ -198,7 +203,7 @@ def main():
         for k in keys:
             r.setdefault(k, "")
     stem = os.path.join(bc.ROOT, "benchmarks", "results",
-                        "profile-cost.%s" % args.platform)
+                        "%s.%s" % (args.output, args.platform))
     bc.write_csv(stem + ".csv", rows)
     print("wrote %s.csv" % stem)
 
