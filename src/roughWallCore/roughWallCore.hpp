@@ -9,6 +9,7 @@
 //   profileRoughness.hpp         Delta(d) from Ra, Rq, Rz, RSm (closed-form estimate)
 //   rollingSphereEnvelope.hpp    Delta(d) and the tilt's shape from a wall profile
 //   profileFile.hpp              reading a measured profile trace
+//   envelopeAngleTable.hpp       Delta(d) of a profile tabulated for look-ups per hit
 //   spinLiftAndTorque.hpp        rotational lift and fluid torque of a sphere
 // (and, below collideWithRoughWall: facetAngleSampler, facetCollision,
 // CollisionAngleDistribution, gaussianMass, standardNormal, fastMath)
@@ -21,4 +22,5 @@
 #include "profileRoughness.hpp"
 #include "rollingSphereEnvelope.hpp"
 #include "profileFile.hpp"
+#include "envelopeAngleTable.hpp"
 #include "spinLiftAndTorque.hpp"

@@ -56,11 +56,13 @@ CASES = [
     ("flanks too steep", rough("Rq 2e-6; RSm 10e-6;"),
      ["keyword 'RSm'", IN, "RSm >= 2 pi Rq", "at most 45"]),
     ("unknown keyword", rough("Ra 1e-6; Rsm 50e-6;"),
-     ["keyword 'Rsm'", IN, "the keywords of roughness: Ra Rq Rz RSm",
+     ["keyword 'Rsm'", IN,
+      "the keywords of roughness: profile Ra Rq Rz RSm estimate",
       "closest: RSm", "not a keyword here"]),
     ("roughness not a dictionary",
      b.settings({"roughnessAngle": None, "roughness": "1e-6"}),
-     ["keyword 'roughness'", IN, "a dictionary { Ra ...; RSm ...; }"]),
+     ["keyword 'roughness'", IN,
+      'a dictionary { profile "<file>"; } or { Ra ...; RSm ...; }']),
     ("roughnessAngle and roughness", rough("Ra 1e-6; RSm 50e-6;", angle="8"),
      ["keyword 'roughnessAngle'", IN, "exactly one of the keywords "
       "roughnessAngle", "both roughnessAngle and roughness"]),
@@ -75,12 +77,22 @@ def test():
     case.set_control(endTime="0.001")
     case.mesh()
 
-    # Control: valid parameters run and the log states the Delta they give
-    case.write_settings(rough("Ra 1e-6; Rz 6e-6; RSm 50e-6;"))
-    rc, _ = case.solve("log.good", check_rc=False)
-    t.check(rc == 0 and "atan(2 pi Rq/max(RSm, d))" in case.log("log.good"),
-            "control: valid roughness parameters run (rc %d) and are logged"
-            % rc)
+    # Controls: valid parameters run and the log states the Delta they
+    # give: by default the envelope of the synthetic Gaussian profile of
+    # their Rq (Ra given: Rq = sqrt(pi/2) Ra = 1.25331e-06 m), on request
+    # the closed-form estimate
+    for i, (body, text) in enumerate([
+            ("Ra 1e-6; Rz 6e-6; RSm 50e-6;",
+             "envelope of the synthetic Gaussian profile, Rq = 1.25331e-06 m,"
+             " RSm = 5e-05 m"),
+            ("Ra 1e-6; Rz 6e-6; RSm 50e-6; estimate closedForm;",
+             "atan(2 pi Rq/max(RSm, d))")]):
+        case.write_settings(rough(body))
+        log = "log.good%d" % i
+        rc, _ = case.solve(log, check_rc=False)
+        t.check(rc == 0 and text in case.log(log),
+                "control: roughness { %s } runs (rc %d) and the log says '%s'"
+                % (body, rc, text))
 
     b.check_bad_cases(case, platform, CASES)
 

@@ -24,12 +24,20 @@ the energy loss and the reference are all taken relative to the wall.
 Usage: testWallImpact.py --platform openfoam13|openfoam1912
            --cloud colliding|kinematic|DPM|MPPIC
            [--roughness "8" | --roughness "((100e-6 8) (120e-6 4))"]
-           [--roughnessParameters "Rq 2.35e-6; RSm 105e-6;"]
+           [--roughnessParameters "Rq 2.35e-6; RSm 105e-6; estimate closedForm;"]
+           [--profile]
            [--parcels N] [--np N] [--wallVelocity u] [--work DIR]
 --roughnessParameters: the wall given by its profile parameters
 (roughness { ... } instead of roughnessAngle); the reference of each size
 class is that of the constant Delta = atan(2 pi Rq / max(RSm, d)) of its
-diameter (docs/roughWallInteraction.md, equation (1), evaluated here).
+diameter (docs/roughWallInteraction.md, equation (1), evaluated here; so
+the parameters must say estimate closedForm).
+--profile: the wall given by a measured trace, roughness { profile
+"constant/wallProfile"; } (a path relative to the case), the trace of
+roughnessProfileOracle.py; the reference of each size class is that of the
+constant Delta(d) the rolling-sphere envelope gives for its diameter,
+computed by that module's brute force (not by the library); the log must
+state the tabulation.
 --cloud: colliding (spin) and kinematic clouds in the frozen carrier
 (openfoam13: foamRun, functions solver, collidingCloud / cloud; openfoam1912:
 icoUncoupledKinematicParcelFoam / uncoupledKinematicParcelFoam); MPPIC
@@ -53,6 +61,7 @@ import numpy as np
 
 import foamTestCase as t
 import foamcase as fc
+import roughnessProfileOracle as profileOracle
 
 END_TIME = "0.05"
 
@@ -62,7 +71,10 @@ def parse_args():
     t.add_platform_args(p)
     p.add_argument("--roughness", default="8")
     p.add_argument("--roughnessParameters", default=None,
-                   help="roughness { Rq ...; RSm ...; } (Rq and RSm only)")
+                   help="roughness { Rq ...; RSm ...; estimate closedForm; }"
+                        " (Rq and RSm only)")
+    p.add_argument("--profile", action="store_true",
+                   help="roughness { profile \"constant/wallProfile\"; }")
     p.add_argument("--parcels", type=int, default=10000)
     p.add_argument("--np", type=int, default=1)
     p.add_argument("--wallVelocity", type=float, default=0.0,
@@ -79,7 +91,11 @@ def roughness_at(text, d):
     return float(np.interp(d, table[:, 0], table[:, 1]))
 
 
-def settings(roughness, parameters=None):
+def settings(roughness, parameters=None, profile=False):
+    if profile:
+        return t.DEFAULT_SETTINGS.replace(
+            "roughnessAngle  8;",
+            'roughness { profile "constant/wallProfile"; }')
     if parameters:
         return t.DEFAULT_SETTINGS.replace("roughnessAngle  8;",
                                           "roughness { %s }" % parameters)
@@ -92,6 +108,7 @@ def profile_delta(parameters, d):
     atan(2 pi Rq / max(RSm, d)), typed from docs/roughWallInteraction.md"""
     values = dict(item.split() for item in parameters.split(";")
                   if item.strip())
+    assert values.get("estimate") == "closedForm"
     Rq = float(values["Rq"])
     RSm = float(values["RSm"])
     return math.degrees(math.atan(2 * math.pi * Rq / max(RSm, d)))
@@ -104,11 +121,21 @@ def test():
     case = t.wall_impact_case(platform, os.path.join(args.work, "case"),
                               args.cloud, parcels=args.parcels,
                               settings=settings(args.roughness,
-                                                args.roughnessParameters))
+                                                args.roughnessParameters,
+                                                args.profile))
+    if args.profile:
+        profileOracle.write_profile(case.file("constant/wallProfile"))
     if args.wallVelocity:
         t.set_wall_velocity(case, args.wallVelocity)
     case.mesh(args.np)
     case.solve()
+    if args.profile:
+        t.check(bool(re.search(r"roughness: Delta\(d_p\) of the rolling-sphere "
+                               r"envelope of the profile \S*wallProfile "
+                               r"\(%d points, levelled\) tabulated at \d+ "
+                               r"diameters" % profileOracle.POINTS,
+                               case.log())),
+                "the log states the profile's tabulation")
 
     if args.np > 1:
         t.check(bool(re.search(r"nProcs\s*:\s*%d\b" % args.np, case.log())),
@@ -149,9 +176,14 @@ def test():
 
     # Rebound statistics per angle against the oracle
     def reference_of_angle(angle, d_angle):
-        delta = profile_delta(args.roughnessParameters, d_angle) \
-            if args.roughnessParameters \
-            else roughness_at(args.roughness, d_angle)
+        if args.profile:
+            delta = math.degrees(profileOracle.delta(d_angle))
+            print("Delta(%g m) of the profile (brute-force envelope): %.4f deg"
+                  % (d_angle, delta))
+        elif args.roughnessParameters:
+            delta = profile_delta(args.roughnessParameters, d_angle)
+        else:
+            delta = roughness_at(args.roughness, d_angle)
         return t.reference(spin, delta, [angle])[angle], delta
 
     kn_all, kt_all = t.check_rebound_statistics(

@@ -32,11 +32,15 @@ License
 #include "roughWallInput.H"
 #include "foamCompat.H"
 #include "roughWallLimits.hpp"
+#include "profileFile.hpp"
+#include "OSspecific.H"
 #include "Tuple2.H"
 #include "OStringStream.H"
 #include "emptyPolyPatch.H"
 #include "wedgePolyPatch.H"
 #include "wallPolyPatch.H"
+
+#include <ctime>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -73,9 +77,16 @@ const char* const angleMeaning =
     "particle diameter d [m]";
 
 const char* const profileMeaning =
-    "profile roughness parameters of the wall (ISO 4287, SI units): "
-    "one or more of Ra, Rq, Rz, and RSm; Delta(d_p) = "
-    "atan(2 pi Rq / max(RSm, d_p))";
+    "the wall's profile: a measured trace (profile \"<file>\") or its "
+    "roughness parameters (ISO 4287, SI units: one or more of Ra, Rq, Rz, "
+    "and RSm); Delta(d_p) from the rolling-sphere envelope of the trace or "
+    "of a synthetic Gaussian profile with these parameters (estimate "
+    "closedForm: atan(2 pi Rq / max(RSm, d_p)))";
+
+const char* const traceMeaning =
+    "measured wall profile: an ASCII file of lines 'x z' [m] (or units "
+    "given by a line '# units XU ZU'), x strictly increasing; path "
+    "absolute or relative to the case";
 
 } // End anonymous namespace
 
@@ -179,8 +190,8 @@ void Foam::roughWallPatchSettings::readRoughness(const dictionary& dict)
         (
             dict, "roughnessAngle",
             "exactly one of the keywords roughnessAngle (a constant or a "
-            "table against the diameter) and roughness (the profile "
-            "parameters)",
+            "table against the diameter) and roughness (a profile file or "
+            "the profile parameters)",
             "the wall's roughness",
             angle
           ? "both roughnessAngle and roughness"
@@ -333,7 +344,8 @@ void Foam::roughWallPatchSettings::readProfile(const dictionary& dict)
     {
         roughWallInput::fatalBadEntry
         (
-            dict, "roughness", "a dictionary { Ra ...; RSm ...; }",
+            dict, "roughness",
+            "a dictionary { profile \"<file>\"; } or { Ra ...; RSm ...; }",
             profileMeaning, "'" + roughWallInput::entryText(dict, "roughness") + "'"
         );
     }
@@ -343,7 +355,7 @@ void Foam::roughWallPatchSettings::readProfile(const dictionary& dict)
     dictionary rDict(e.dict());
     rDict.name() = fileName(dict.name() + scope + "roughness");
 
-    static const wordList names{"Ra", "Rq", "Rz", "RSm"};
+    static const wordList names{"profile", "Ra", "Rq", "Rz", "RSm", "estimate"};
     static const char* const meanings[] =
     {
         "arithmetic mean height of the profile [m]",
@@ -354,19 +366,73 @@ void Foam::roughWallPatchSettings::readProfile(const dictionary& dict)
 
     roughWallInput::checkKeywords(rDict, names, "roughness");
 
+    // A measured trace: the wall itself, nothing else beside it
+    if (roughWallCompat::findLiteral(rDict, "profile"))
+    {
+        for (label i = 1; i < names.size(); ++i)
+        {
+            if (roughWallCompat::findLiteral(rDict, names[i]))
+            {
+                roughWallInput::fatalBadEntry
+                (
+                    rDict, names[i],
+                    "no other keyword beside profile (the trace gives the "
+                    "wall): either profile or the parameters Ra/Rq/Rz, RSm",
+                    profileMeaning,
+                    "'" + roughWallInput::entryText(rDict, names[i]) + "'"
+                );
+            }
+        }
+
+        const string allowed =
+            "a readable trace of at least "
+          + Foam::name(label(roughWall::minProfilePoints))
+          + " points, lines 'x z' with finite numbers, x strictly increasing "
+            "(docs/roughWallInteraction.md)";
+        const fileName given = roughWallInput::read<fileName>
+        (
+            rDict, "profile", allowed, traceMeaning
+        );
+        fileName path(given);
+        path.expand();
+        if (!path.isAbsolute())
+        {
+            path = fileName(getEnv("FOAM_CASE"))/path;
+        }
+
+        roughWall::SampledProfile trace;
+        try
+        {
+            trace = roughWall::levelledProfile(roughWall::readProfileFile(path));
+        }
+        catch (const std::exception& err)
+        {
+            roughWallInput::fatalBadEntry
+            (
+                rDict, "profile", allowed, traceMeaning, string(err.what())
+            );
+        }
+        envelopeSource_ =
+            "profile " + path + " (" + Foam::name(label(trace.x.size()))
+          + " points, levelled)";
+        tabulate(rDict, "profile", trace, 0, 0);
+        return;
+    }
+
     double* values[] =
         {&profile_.Ra, &profile_.Rq, &profile_.Rz, &profile_.RSm};
     bool given[4];
-    forAll(names, i)
+    for (label i = 0; i < 4; ++i)
     {
-        given[i] = roughWallCompat::findLiteral(rDict, names[i]);
+        const word& name = names[i + 1];
+        given[i] = roughWallCompat::findLiteral(rDict, name);
 
         // The signs are checked with the other limits below
         *values[i] =
             given[i]
           ? roughWallInput::readScalar
             (
-                rDict, names[i], {-GREAT, GREAT, meanings[i]}
+                rDict, name, {-GREAT, GREAT, meanings[i]}
             )
           : 0;
     }
@@ -389,9 +455,125 @@ void Foam::roughWallPatchSettings::readProfile(const dictionary& dict)
         );
     }
 
-    fromProfile_ = true;
-    correlation_ = roughWall::RoughnessCorrelation(profile_);
-    rough_.roughnessAngle = correlation_.angleUncached(0);
+    // How Delta(d) follows from the parameters: the envelope of the
+    // synthetic Gaussian profile (default), or the closed-form estimate
+    // (docs/roughWallInteraction.md: its figure shows where they differ)
+    word estimate("envelope");
+    if (roughWallCompat::findLiteral(rDict, "estimate"))
+    {
+        const string allowed = "one of 2 words: envelope closedForm";
+        const char* const meaning =
+            "how Delta(d_p) follows from the parameters: the rolling-sphere "
+            "envelope of a synthetic Gaussian profile (envelope, default) "
+            "or atan(2 pi Rq / max(RSm, d_p)) (closedForm)";
+        estimate = roughWallInput::read<word>(rDict, "estimate", allowed, meaning);
+        if (estimate != "envelope" && estimate != "closedForm")
+        {
+            roughWallInput::fatalBadEntry
+            (
+                rDict, "estimate", allowed, meaning, "'" + estimate + "'"
+            );
+        }
+    }
+
+    if (estimate == "closedForm")
+    {
+        fromProfile_ = true;
+        correlation_ = roughWall::RoughnessCorrelation(profile_);
+        rough_.roughnessAngle = correlation_.angleUncached(0);
+        return;
+    }
+
+    // Rq of a Gaussian profile: exactly from Ra; from Rz over sampling
+    // lengths of 5 RSm (rollingSphereEnvelope.hpp)
+    roughWall::SyntheticProfileSettings synthetic;
+    synthetic.Rq =
+        given[1] ? profile_.Rq
+      : given[0] ? roughWall::rqPerRaGaussian*profile_.Ra
+      : profile_.Rz/roughWall::rzPerRqGaussian;
+    synthetic.RSm = profile_.RSm;
+
+    const roughWall::SampledProfile profile =
+        roughWall::syntheticGaussianProfile(synthetic);
+    envelopeSource_ =
+        "synthetic Gaussian profile, Rq = " + Foam::name(synthetic.Rq)
+      + " m, RSm = " + Foam::name(synthetic.RSm) + " m ("
+      + Foam::name(label(profile.x.size())) + " points, seed "
+      + Foam::name(label(synthetic.seed)) + ")";
+
+    // Below RSm/10 Delta is at its small-sphere limit (to 3e-4 deg); above
+    // 100 RSm it has fallen to a tenth of it
+    tabulate
+    (
+        rDict, given[1] ? "Rq" : given[0] ? "Ra" : "Rz", profile,
+        synthetic.RSm/10, 100*synthetic.RSm
+    );
+}
+
+
+void Foam::roughWallPatchSettings::tabulate
+(
+    const dictionary& rDict,
+    const word& keyword,
+    const roughWall::SampledProfile& profile,
+    const scalar dMin,
+    const scalar dMax
+)
+{
+    const std::clock_t start = std::clock();
+    try
+    {
+        envelope_ = roughWall::EnvelopeAngleTable(profile, dMin, dMax);
+    }
+    catch (const std::exception& err)
+    {
+        roughWallInput::fatalBadEntry
+        (
+            rDict, keyword,
+            "a profile longer than twice its largest point spacing",
+            profileMeaning, envelopeSource_ + ": " + err.what()
+        );
+    }
+    const scalar seconds = scalar(std::clock() - start)/CLOCKS_PER_SEC;
+
+    const scalar maxDeg = roughWall::limits::maxRoughnessAngleDeg;
+    if (roughWall::limits::radToDeg(envelope_.maxAngle()) > maxDeg)
+    {
+        roughWallInput::fatalBadEntry
+        (
+            rDict, keyword,
+            "a profile whose Delta(d_p) is at most " + Foam::name(maxDeg)
+          + " deg (the model's limit)",
+            profileMeaning,
+            envelopeSource_ + ": Delta up to "
+          + Foam::name(roughWall::limits::radToDeg(envelope_.maxAngle()))
+          + " deg"
+        );
+    }
+
+    rough_.roughnessAngle = envelope_.interpolate(envelope_.dMin());
+
+    Info<< "    " << rDict.name().c_str() << ": Delta(d_p) of the rolling-sphere "
+        << "envelope of the " << envelopeSource_.c_str() << " tabulated at "
+        << label(envelope_.rows()) << " diameters from " << envelope_.dMin()
+        << " to " << envelope_.dMax() << " m in " << seconds << " s CPU"
+        << endl;
+}
+
+
+void Foam::roughWallPatchSettings::warnOutside(const scalar d) const
+{
+    if (!warnedRange_)
+    {
+        warnedRange_ = true;
+        WarningInFunction
+            << "Patch " << patchName_ << ": a parcel of diameter " << d
+            << " m hit the wall, outside the diameters " << envelope_.dMin()
+            << " to " << envelope_.dMax() << " m for which Delta(d_p) of the "
+            << envelopeSource_.c_str() << " is tabulated;" << nl
+            << "    Delta is held at its value at the nearer end (this "
+            << "warning is given once per patch entry)" << endl;
+    }
 }
 
 
@@ -432,7 +614,15 @@ Foam::scalar Foam::roughWallPatchSettings::tableAngle(const scalar d) const
 Foam::string Foam::roughWallPatchSettings::roughnessDescription() const
 {
     OStringStream os;
-    if (fromProfile_)
+    if (envelope_.rows())
+    {
+        os  << "envelope of the " << envelopeSource_.c_str() << ": "
+            << roughWall::limits::radToDeg(envelope_.interpolate(envelope_.dMin()))
+            << " deg at d = " << envelope_.dMin() << " m to "
+            << roughWall::limits::radToDeg(envelope_.interpolate(envelope_.dMax()))
+            << " deg at d = " << envelope_.dMax() << " m";
+    }
+    else if (fromProfile_)
     {
         os  << "atan(2 pi Rq/max(RSm, d)) with Rq = "
             << correlation_.rmsHeight() << " m, RSm = " << profile_.RSm
@@ -467,7 +657,10 @@ Foam::roughWallPatchSettings::roughWallPatchSettings()
     angles_(),
     fromProfile_(false),
     profile_(),
-    correlation_()
+    correlation_(),
+    envelope_(),
+    envelopeSource_(),
+    warnedRange_(false)
 {}
 
 
