@@ -173,16 +173,23 @@ std::vector<std::string> split(const std::string& text, char separator)
     return parts;
 }
 
-std::vector<double> angleList(const std::string& text)
+//- Numbers and start:step:stop ranges separated by commas, for an option
+//  whose values are counted as noun (at most maxCount in one range)
+std::vector<double> numberList
+(
+    const std::string& option,
+    const std::string& text,
+    const double maxCount,
+    const std::string& noun
+)
 {
-    const std::string option = "--alpha";
-    std::vector<double> angles;
+    std::vector<double> values;
     for (const std::string& item : split(text, ','))
     {
         const std::vector<std::string> range = split(item, ':');
         if (range.size() == 1)
         {
-            angles.push_back(number(option, item));
+            values.push_back(number(option, item));
         }
         else if (range.size() == 3)
         {
@@ -195,13 +202,16 @@ std::vector<double> angleList(const std::string& text)
                      + " must be start:step:stop with step > 0 and stop >= start");
             }
             const double count = std::floor((stop - start)/step*(1 + 1e-12)) + 1;
-            if (count > 100000)
+            if (count > maxCount)
             {
-                fail(option + " range " + quoted(item) + " has more than 100000 angles");
+                std::ostringstream message;
+                message << option << " range " << quoted(item) << " has more than "
+                        << maxCount << ' ' << noun;
+                fail(message.str());
             }
             for (long long i = 0; i < static_cast<long long>(count); ++i)
             {
-                angles.push_back(std::min(stop, start + i*step));
+                values.push_back(std::min(stop, start + i*step));
             }
         }
         else
@@ -210,6 +220,12 @@ std::vector<double> angleList(const std::string& text)
                  + quoted(item));
         }
     }
+    return values;
+}
+
+std::vector<double> angleList(const std::string& text)
+{
+    const std::vector<double> angles = numberList("--alpha", text, 100000, "angles");
     for (const double a : angles)
     {
         if (!(a > 0 && a <= 90))
@@ -232,41 +248,7 @@ std::vector<double> angleList(const std::string& text)
 //- Diameters [m] > 0: numbers and start:step:stop ranges
 std::vector<double> diameterList(const std::string& text)
 {
-    const std::string option = "--d";
-    std::vector<double> ds;
-    for (const std::string& item : split(text, ','))
-    {
-        const std::vector<std::string> range = split(item, ':');
-        if (range.size() == 1)
-        {
-            ds.push_back(number(option, item));
-        }
-        else if (range.size() == 3)
-        {
-            const double start = number(option, range[0]);
-            const double step = number(option, range[1]);
-            const double stop = number(option, range[2]);
-            if (!(step > 0) || stop < start)
-            {
-                fail(option + " range " + quoted(item)
-                     + " must be start:step:stop with step > 0 and stop >= start");
-            }
-            const double count = std::floor((stop - start)/step*(1 + 1e-12)) + 1;
-            if (count > 10000)
-            {
-                fail(option + " range " + quoted(item) + " has more than 10000 diameters");
-            }
-            for (long long i = 0; i < static_cast<long long>(count); ++i)
-            {
-                ds.push_back(std::min(stop, start + i*step));
-            }
-        }
-        else
-        {
-            fail(option + " needs numbers or start:step:stop ranges separated by commas, got "
-                 + quoted(item));
-        }
-    }
+    const std::vector<double> ds = numberList("--d", text, 10000, "diameters");
     for (const double d : ds)
     {
         if (!(d > 0))
