@@ -64,6 +64,16 @@ QUANTILES = (0.01, 0.1, 0.5, 0.9, 0.99)
 # Documented ranges of the rotational-lift coefficients (docs/spin.md)
 OESTERLE_RANGE = {"Rep": (10, 140), "Gamma": (1, 6)}
 LOTH_RANGE = {"Rep": (0, 2000), "Gamma": (0, 10)}     # Omega* = 2 Gamma < 20
+# Range of Mei's (1992) fit of the shear lift (SaffmanMeiLiftForce), as quoted
+# with Mei (1992), Crowe et al. (2012) and the Fluent Theory Guide by the
+# public Python module lift_laws (J. Aguirre): 0.1 <= Re_p <= 100 and
+# 0.005 <= beta <= 0.4, beta = Re_w/(2 Re_p), Re_w = |curl U| d^2/nu
+# (OpenFOAM's beta); Mei's paper itself not read (README)
+MEI_RANGE = {"Rep": (0.1, 100), "beta": (0.005, 0.4)}
+# OpenFOAM's sphereDrag (Amsden et al. 1987, as its header cites):
+# C_d Re = 24 (1 + Re^(2/3)/6) up to Re_p = 1000, 0.424 Re_p above (the
+# source's CdRe); the fraction of samples above the switch is reported
+SPHERE_DRAG_SWITCH = 1000
 MIN_SAMPLES = 10        # velocity statistics of a bin need this many samples
 WALLS = tc.WALLS
 EPS_TIME = 1e-9
@@ -153,9 +163,14 @@ def spin_ratios(case, d, y_track, U, omega):
     wrel[:, 2] += -0.5*np.interp(y_track, rows, dudy)
     Rep = np.linalg.norm(urel, axis=1)*d/nu
     ReR = np.linalg.norm(wrel, axis=1)*d*d/nu
+    # Shear Reynolds number of Saffman-Mei: |curl U| = |du/dy| of the mapped
+    # air profile at the parcel centre (OpenFOAM interpolates the curl of the
+    # cell field: cellPoint; this is its row-averaged estimate)
+    ReW = np.abs(np.interp(y_track, rows, dudy))*d*d/nu
     with np.errstate(divide="ignore", invalid="ignore"):
         gamma = ReR/(2*Rep)
-    return Rep, ReR, gamma
+        beta = ReW/(2*Rep)
+    return Rep, ReR, gamma, beta
 
 
 def outside(rng, Rep, gamma):
@@ -195,7 +210,7 @@ def analyse(case):
     y, ux, uy, uz, spin = y[mask], ux[mask], uy[mask], uz[mask], spin[mask]
     omega = omega[mask]
     group, snap = group[mask], snap[mask]
-    Rep, ReR, gamma = spin_ratios(case, d, y - r, np.stack([ux, uy, uz], axis=1),
+    Rep, ReR, gamma, beta = spin_ratios(case, d, y - r, np.stack([ux, uy, uz], axis=1),
                                   omega)
 
     edges = np.linspace(r, H - r, N_BINS + 1)
@@ -291,6 +306,17 @@ def analyse(case):
     ratios["outsideLoth"] = outside(LOTH_RANGE, Rep[ok], gamma[ok])
     ratios["outsideOesterleBuiDinh"] = outside(OESTERLE_RANGE, Rep[ok], gamma[ok])
     ratios["GammaAbove1"] = float(np.mean(gamma[ok] > 1))
+    # Saffman-Mei (every variant) and the drag correlation against their ranges
+    meiB, meiR = beta[ok], Rep[ok]
+    for q in QUANTILES:
+        ratios["betaMei_q%02d" % round(100*q)] = float(np.quantile(meiB, q))
+    ratios["outsideSaffmanMei"] = float(np.mean(
+        (meiR < MEI_RANGE["Rep"][0]) | (meiR > MEI_RANGE["Rep"][1])
+        | ~(meiB >= MEI_RANGE["beta"][0]) | ~(meiB <= MEI_RANGE["beta"][1])))
+    ratios["MeiRepAbove"] = float(np.mean(meiR > MEI_RANGE["Rep"][1]))
+    ratios["MeiBetaBelow"] = float(np.mean(~(meiB >= MEI_RANGE["beta"][0])))
+    ratios["MeiBetaAbove"] = float(np.mean(meiB > MEI_RANGE["beta"][1]))
+    ratios["RepAboveDragSwitch"] = float(np.mean(meiR > SPHERE_DRAG_SWITCH))
     summary["outsideLiftRange"] = {
         "Loth": ratios["outsideLoth"],
         "OesterleBuiDinh": ratios["outsideOesterleBuiDinh"]}.get(
@@ -597,7 +623,10 @@ def write_carrier(path, stats):
 RATIO_COLUMNS = (["variant", "lift", "samples"]
                  + ["%s_q%02d" % (k, round(100*q)) for k in ("Gamma", "Rep", "ReR")
                     for q in QUANTILES]
-                 + ["outsideLoth", "outsideOesterleBuiDinh", "GammaAbove1"])
+                 + ["outsideLoth", "outsideOesterleBuiDinh", "GammaAbove1"]
+                 + ["betaMei_q%02d" % round(100*q) for q in QUANTILES]
+                 + ["outsideSaffmanMei", "MeiRepAbove", "MeiBetaBelow",
+                    "MeiBetaAbove", "RepAboveDragSwitch"])
 
 
 def write_spin_ratios(path, results):

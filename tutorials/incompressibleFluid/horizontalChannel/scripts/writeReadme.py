@@ -92,6 +92,8 @@ CHOICES = (
     ("rough5.2D", "2-D instead of 3-D (no spanwise motion, facets tilted in the plane only)"),
     ("rough5.OesterleBuiDinh", "rotational lift: Oesterle & Bui Dinh (old) instead of Loth"),
     ("rough5.noLift", "rotational lift off (fluid torque on)"),
+    ("rough5.impactDependent", "e and muD tables of the facet impact angle "
+     "(illustrative, equal to rough5's constants at 10 deg) instead of constants"),
     ("rough2.5", "Delta 2.5 instead of 5 deg"),
     ("rough1", "Delta 1 instead of 5 deg (nearly smooth)"),
 )
@@ -103,6 +105,8 @@ STATS = (
     ("meanUxOverBulk", "mean streamwise velocity / bulk air velocity", "%.4f", 1),
     ("impactFrequency", "wall impacts per parcel per metre (both walls)", "%.3f", 1),
 )
+#: What the set-up column cannot show (e and muD are not in summary.csv)
+SETUP_NOTES = {"rough5.impactDependent": ", e and muD tables of the impact angle"}
 #: The roughness trend, smooth end first (Delta = 0 is not part of it)
 TREND = ("rough1", "rough2.5", "rough5")
 SMOOTH = "smooth"
@@ -174,8 +178,8 @@ def carrier(r):
 def setup(r, v):
     x = r.summary[v]
     delta = number(x, "roughnessAngle")
-    return "%s, Delta %g deg, lift %s, torque %s" % (
-        x["geometry"], delta, x["lift"], x["torque"])
+    return "%s, Delta %g deg, lift %s, torque %s%s" % (
+        x["geometry"], delta, x["lift"], x["torque"], SETUP_NOTES.get(v, ""))
 
 
 def results_table(r):
@@ -259,6 +263,27 @@ def spin_ratios(r):
                   "Re_p: quantiles", "Re_R: quantiles", "samples with Gamma > 1",
                   "outside Loth's range (Re_p < 2000, Gamma < 10)",
                   "outside Oesterle & Bui Dinh's (10 < Re_p < 140, 1 < Gamma < 6)"], rows)
+
+
+def force_ranges(r):
+    """Saffman-Mei and the drag correlation against their ranges"""
+    rows = []
+    for v in r.variants:
+        x = r.ratios[v]
+        if "outsideSaffmanMei" not in x:
+            continue
+
+        def pc(key, fmt="%.1f %%"):
+            return fmt % (100*float(x[key]))
+        rows.append(["`%s`" % v,
+                     " / ".join("%.3g" % float(x["betaMei_q%02d" % p])
+                                for p in (1, 10, 50, 90, 99)),
+                     pc("outsideSaffmanMei"), pc("MeiRepAbove"), pc("MeiBetaBelow"),
+                     pc("MeiBetaAbove"), pc("RepAboveDragSwitch", "%.2f %%")])
+    return table(["variant", "shear parameter beta = Re_w/(2 Re_p): 1 / 10 / 50 / 90 / 99 % "
+                  "quantiles", "outside Mei's range (0.1 <= Re_p <= 100, 0.005 <= beta <= 0.4)",
+                  "of which Re_p > 100", "beta < 0.005", "beta > 0.4",
+                  "sphereDrag: Re_p > 1000"], rows)
 
 
 def wall_statistics(r):
@@ -381,6 +406,7 @@ BLOCKS = {
     "sensitivity": sensitivity,
     "trends": trends,
     "spinRatios": spin_ratios,
+    "forceRanges": force_ranges,
     "wallStatistics": wall_statistics,
     "spinUp": spin_up,
     "timeStep": time_step,
