@@ -30,35 +30,19 @@ import time
 
 import numpy as np
 
-# The oracle: tests/oracle/roughWallOracle.py, an independent numpy Monte
+# The oracle: src/python/foamcase/roughWallOracle.py, an independent numpy Monte
 # Carlo of the collision operator (its own sampler, no C++ core)
-import roughWallOracle
+from foamcase import roughWallOracle
+# One check for every test script (foamcase.checking); the tests call
+# them as t.check, t.TestFailure
+from foamcase.checking import PASSED, TestFailure, check  # noqa: F401
 from foamcase import (LIBRARY, PLATFORMS, SPIN, FoamCase, FoamError,
                       Injector, Platform, environment_library, find_library,
                       ldd, read_text, write_text)
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-REPO = os.path.dirname(os.path.dirname(HERE))
-
-# ---------------------------------------------------------------------------
-# Assertions
-# ---------------------------------------------------------------------------
-
-
-class TestFailure(Exception):
-    """A failed assertion of a test."""
-
-
-_checks = {"passed": 0}
-
-
-def check(condition, message):
-    """Record one assertion: print it, raise TestFailure if it fails."""
-    print(("PASS  " if condition else "FAIL  ") + message, flush=True)
-    if not condition:
-        raise TestFailure(message)
-    _checks["passed"] += 1
-
+REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
+#: The folder of the OpenFOAM tests and their case templates
+HERE = os.path.join(REPO, "tests", "openfoam")
 
 # ---------------------------------------------------------------------------
 # Platforms
@@ -157,14 +141,14 @@ def main(test, platform_name=None):
         if platform_name is None:
             raise TestFailure("no --platform given")
         check_environment(Platform(platform_name))
-        before = _checks["passed"]
+        before = PASSED[0]
         test()
-        if _checks["passed"] == before:
+        if PASSED[0] == before:
             raise TestFailure("the test made no check")
     except (TestFailure, FoamError) as failure:
         print("TEST FAILED: %s (%.1f s)" % (failure, time.time() - start))
         sys.exit(1)
-    print("TEST PASSED: %d checks (%.1f s)" % (_checks["passed"],
+    print("TEST PASSED: %d checks (%.1f s)" % (PASSED[0],
                                                time.time() - start))
 
 

@@ -8,7 +8,7 @@ import platform
 import re
 import subprocess
 
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
 RESULTS = os.path.join(ROOT, "benchmarks", "results")
 FIGURES = os.path.join(ROOT, "docs", "figures")
 
@@ -42,11 +42,10 @@ def write_csv(name, rows):
         w.writerows(rows)
 
 
-def read_csv(name):
-    """The rows of benchmarks/results/name (or of name if absolute), as dicts"""
-    import csv
-    with open(os.path.join(RESULTS, name)) as f:
-        return list(csv.DictReader(f))
+def result(name):
+    """The path of benchmarks/results/name (name itself if absolute); read
+    it with foamcase.read_csv."""
+    return os.path.join(RESULTS, name)
 
 
 def ensure_dirs():
