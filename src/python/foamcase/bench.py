@@ -1,6 +1,7 @@
 # roughWallInteraction benchmarks: shared helpers of the benchmark scripts.
 # Copyright (C) 2026 roughWallInteraction authors. SPDX-License-Identifier: GPL-3.0-or-later
-"""Paths, machine description, running Google Benchmark binaries."""
+"""Paths, machine description, running Google Benchmark binaries (the
+benchmark scripts import it as bc)."""
 import datetime
 import json
 import os

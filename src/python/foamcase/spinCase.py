@@ -1,6 +1,6 @@
 """The spin cases of the OpenFOAM tests and benchmark of rotationalLift and
-fluidTorque (tests/openfoam/spin), on top of the shared harness
-src/python/foamcase/testing.py: a 0.2 x 0.1 x 0.1 m box of 1 cm cells
+fluidTorque (tests/openfoam/spin, benchmarks/scripts/benchSpin.py), on top
+of the shared harness foamcase.testing: a 0.2 x 0.1 x 0.1 m box of 1 cm cells
 (template tests/openfoam/spin/case), a few parcels near its middle that
 never reach a wall, no forces but the spin models, a frozen carrier (uniform
 stream, still air or solid-body rotation about z through (0, 0.05, 0)).

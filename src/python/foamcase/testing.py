@@ -1,18 +1,18 @@
 """The harness of the OpenFOAM-level tests of roughWallInteraction, for
 all platforms (openfoam13, openfoam14, openfoam1912): assertions (check,
-TestFailure, main), the checks of a platform's environment, the oracle's
-reference statistics, and the test cases (the wall-impact case
+TestFailure from foamcase.checking; main), the checks of a platform's
+environment, the oracle's reference statistics, and the test cases (the
+wall-impact case
 tests/openfoam/wallImpact, the closed box tests/stability/openfoam/closedBox)
 with the checks made on them.
 
-Setting up, running and reading cases is the package foamcase
-(src/python/foamcase): the tests import it as fc.
+Setting up, running and reading cases is the rest of the package
+foamcase: the tests import it as fc, and this module as t.
 
 Tests run as  etc/openfoamEnv <platform> /usr/bin/python3 <script>
 --platform <platform> ...: one platform's environment only; main() checks it
 (and, on openfoam13 and openfoam14, that no OpenFOAM library comes from
-Debian's /usr/lib). ctest sets PYTHONPATH to src/python, tests/openfoam
-(this harness) and tests/oracle (the oracle).
+Debian's /usr/lib). ctest sets PYTHONPATH to src/python.
 
 numpy only.
 
