@@ -21,7 +21,6 @@ from foamcase import bench as bc
 import foamcase as fc
 
 TARGET_NS = 60
-TARGET_RATIO = 10
 CONFIGS = [  # (label, spin, lateral, dim)
     ("3-D, spin", "1", "0", "3"),
     ("3-D, spin, lateral tilt", "1", "1", "3"),

@@ -28,7 +28,6 @@ numpy only.  SPDX-License-Identifier: GPL-3.0-or-later
 
 import math
 import os
-import re
 
 import numpy as np
 
@@ -289,9 +288,3 @@ def rk4_spin_decay(W0, t_, d, n=20000):
         k4 = rate(W + h * k3)
         W += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
     return W / W0
-
-
-def log_value(text, pattern):
-    """The last number matched by pattern (one group) in a log."""
-    found = re.findall(pattern, text)
-    return float(found[-1]) if found else None
