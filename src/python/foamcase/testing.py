@@ -2,9 +2,8 @@
 all platforms (openfoam13, openfoam14, openfoam1912): assertions (check,
 TestFailure from foamcase.checking; main), the checks of a platform's
 environment, the oracle's reference statistics, and the test cases (the
-wall-impact case
-tests/openfoam/wallImpact, the closed box tests/stability/openfoam/closedBox)
-with the checks made on them.
+wall-impact case tests/openfoam/wallImpact, the closed box
+tests/stability/openfoam/closedBox) with the checks made on them.
 
 Setting up, running and reading cases is the rest of the package
 foamcase: the tests import it as fc, and this module as t.
