@@ -17,10 +17,10 @@ import shutil
 import statistics
 import subprocess
 
-import benchCommon as bc
+from foamcase import bench as bc
+import foamcase as fc
 
 TARGET_NS = 60
-TARGET_RATIO = 10
 CONFIGS = [  # (label, spin, lateral, dim)
     ("3-D, spin", "1", "0", "3"),
     ("3-D, spin, lateral tilt", "1", "1", "3"),
@@ -61,7 +61,7 @@ def measure(args):
 
 
 def load():
-    return bc.read_csv("hit-cost.csv")
+    return fc.read_csv(bc.result("hit-cost.csv"))
 
 
 def baseline(filename, key):
@@ -69,7 +69,7 @@ def baseline(filename, key):
     path = os.path.join(bc.RESULTS, BASELINE, filename)
     if not os.path.exists(path):
         return {}
-    return {r[key]: r for r in bc.read_csv(path)
+    return {r[key]: r for r in fc.read_csv(bc.result(path))
             if r.get("model", "rough") == "rough"}
 
 

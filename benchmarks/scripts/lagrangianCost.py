@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Cost of roughVelocity against OpenFOAM's reboundVelocity in the
 field-based Lagrangian: the closed box of the LagrangianRoughVelocity tests
-(tests/openfoam/lagrangianCase.py; 2000 particles under gravity, all six
+(src/python/foamcase/lagrangianCase.py; 2000 particles under gravity, all six
 walls with the condition, 400 steps of 1 ms), run alternately with each
 condition, the CPU time of foamRun (its last ExecutionTime) per run.
 
@@ -23,7 +23,7 @@ import time
 import numpy as np
 
 import foamcase as fc
-import lagrangianCase as lc
+from foamcase import lagrangianCase as lc
 
 CONDITIONS = {
     "roughVelocity": "type roughVelocity; e 0.9; mu0 0.3; muD 0.2; "

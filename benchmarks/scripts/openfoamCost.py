@@ -100,13 +100,13 @@ import os
 import re
 import sys
 
-import benchCommon as bc
+from foamcase import bench as bc
 import foamcase as fc
-from openfoamcost.case import Runner
-from openfoamcost.parse import load_rows
-from openfoamcost.report import (callgrind_table, figure, summarise, table,
+from foamcase.openfoamcost.case import Runner
+from foamcase.openfoamcost.parse import load_rows
+from foamcase.openfoamcost.report import (callgrind_table, figure, summarise, table,
                                  tutorial_stem, tutorial_table)
-from openfoamcost.run import callgrind, measure, profile, tutorial_measure
+from foamcase.openfoamcost.run import callgrind, measure, profile, tutorial_measure
 
 
 def tutorial_cost(args):
@@ -114,7 +114,7 @@ def tutorial_cost(args):
     library's smooth and rough walls, same parcels and time steps,
     alternated"""
     if args.plot_only:
-        tutorial_table(bc.read_csv(tutorial_stem(args.tag) + ".csv"),
+        tutorial_table(fc.read_csv(bc.result(tutorial_stem(args.tag) + ".csv")),
                        args.tag)
         return
     rows, _ = tutorial_measure(args)
@@ -136,7 +136,7 @@ def plot_only(args):
         table(tag, summaries[tag], rows)
         cg = "openfoam-callgrind.%s.csv" % tag
         if os.path.exists(os.path.join(bc.RESULTS, cg)):
-            callgrind_table(tag, bc.read_csv(cg))
+            callgrind_table(tag, fc.read_csv(bc.result(cg)))
     if summaries:
         figure(summaries)
 

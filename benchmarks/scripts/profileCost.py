@@ -31,18 +31,14 @@ import argparse
 import os
 import re
 import shutil
-import sys
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-
-import benchCommon as bc  # noqa: E402
-import foamcase as fc  # noqa: E402
-from openfoamcost.case import Runner, make_case  # noqa: E402
-from openfoamcost.parse import callgrind_profile  # noqa: E402
-from openfoamcost.run import run  # noqa: E402
+from foamcase import bench as bc
+import foamcase as fc
+from foamcase.openfoamcost.case import Runner, make_case
+from foamcase.openfoamcost.parse import callgrind_profile
+from foamcase.openfoamcost.run import run
 
 POINTS = 100000
 SPACING = 0.5e-6
@@ -141,7 +137,7 @@ def main():
     args.lib_path, args.baseline_lib, args.variant_lib_path = [], None, []
     runner = Runner(args)
     runner.check_environment()
-    import openfoamcost.case as oc
+    from foamcase.openfoamcost import case as oc
     oc.MODEL_FILE.update(rough="rough", profile="profile")
     work = os.path.join(os.path.abspath(args.work), args.platform)
     os.makedirs(work, exist_ok=True)

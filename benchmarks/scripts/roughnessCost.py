@@ -18,7 +18,7 @@ import os
 import statistics
 import subprocess
 
-import benchCommon as bc
+from foamcase import bench as bc
 
 LABELS = {
     "roughness/delta:constant/alpha:mix": "constant Delta",

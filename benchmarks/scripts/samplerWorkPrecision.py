@@ -17,7 +17,8 @@ import math
 import os
 import subprocess
 
-import benchCommon as bc
+from foamcase import bench as bc
+import foamcase as fc
 
 SAMPLERS = [  # name, label, color, marker
     ("exact", "exact (core sampleFacetAngle)", "C0", "o"),
@@ -53,7 +54,7 @@ def measure(args):
 
 
 def load(name):
-    return bc.read_csv(name)
+    return fc.read_csv(bc.result(name))
 
 
 def hkey(h):

@@ -21,13 +21,7 @@ import math
 import subprocess
 import sys
 
-failures = []
-
-
-def check(condition, message):
-    print(("ok    " if condition else "FAIL  ") + message)
-    if not condition:
-        failures.append(message)
+from foamcase.checking import expect, finish
 
 
 def finite(x):
@@ -39,19 +33,19 @@ def smoke_bench(binary):
         [binary, "--benchmark_min_time=0.001", "--benchmark_format=json"],
         check=True, capture_output=True, text=True).stdout
     runs = json.loads(out)["benchmarks"]
-    check(len(runs) > 150, "benchRoughWallCore ran %d benchmarks" % len(runs))
+    expect(len(runs) > 150, "benchRoughWallCore ran %d benchmarks" % len(runs))
     for run in runs:
         name = run["name"]
-        check(finite(run["real_time"]) and run["real_time"] > 0
-              and finite(run["cpu_time"]) and run["cpu_time"] > 0,
-              "%s: time %.4g %s" % (name, run["real_time"], run["time_unit"]))
+        expect(finite(run["real_time"]) and run["real_time"] > 0
+               and finite(run["cpu_time"]) and run["cpu_time"] > 0,
+               "%s: time %.4g %s" % (name, run["real_time"], run["time_unit"]))
         if "model:rough" in name:
             fc = run["facetCollisions"]
-            check(finite(fc) and 1 <= fc <= 10,
-                  "%s: %.4g facet collisions per hit" % (name, fc))
+            expect(finite(fc) and 1 <= fc <= 10,
+                   "%s: %.4g facet collisions per hit" % (name, fc))
             delta = float(name.split("Delta:")[1].split("/")[0])
             if delta <= 8:
-                check(run["fallbacks"] == 0, "%s: no fallback" % name)
+                expect(run["fallbacks"] == 0, "%s: no fallback" % name)
 
 
 def smoke_work_precision(binary):
@@ -62,26 +56,26 @@ def smoke_work_precision(binary):
          "--calibrate", "0.01"],
         check=True, capture_output=True, text=True).stdout
     rows = list(csv.DictReader(io.StringIO(out)))
-    check(len(rows) == 12, "samplerWorkPrecision wrote %d rows" % len(rows))
+    expect(len(rows) == 12, "samplerWorkPrecision wrote %d rows" % len(rows))
     band = 1.949/math.sqrt(n)
     for r in rows:
         label = "%s h=%s" % (r["sampler"], r["h"])
         if r["status"] == "nonterminating":
-            check(r["sampler"] == "rejection" and float(r["h"]) == 0,
-                  label + ": non-terminating only for rejection at h = 0")
+            expect(r["sampler"] == "rejection" and float(r["h"]) == 0,
+                   label + ": non-terminating only for rejection at h = 0")
             continue
         values = [float(r[k]) for k in ("seconds_median", "ns_per_sample",
                                          "ks_mean", "bias_rms",
                                          "bias_expected")]
-        check(r["status"] == "ok" and all(map(math.isfinite, values)),
-              label + ": finite results")
+        expect(r["status"] == "ok" and all(map(math.isfinite, values)),
+               label + ": finite results")
         ks = float(r["ks_mean"])
         if r["sampler"] == "noShadow":
             if float(r["h"]) == 0:
-                check(ks > 0.05, label + ": wrong sampler detected, D = %.3g"
-                      % ks)
+                expect(ks > 0.05, label + ": wrong sampler detected, D = %.3g"
+                       % ks)
         else:
-            check(ks < band, label + ": D = %.3g < %.3g" % (ks, band))
+            expect(ks < band, label + ": D = %.3g < %.3g" % (ks, band))
 
 
 def smoke_hit_loop(binary):
@@ -89,8 +83,8 @@ def smoke_hit_loop(binary):
         out = subprocess.run(
             [binary, model, "1", "0", "3", "mix", "8", "1000"],
             check=True, capture_output=True, text=True).stdout
-        check(math.isfinite(float(out)), "hitLoop %s: checksum %s"
-              % (model, out.strip()))
+        expect(math.isfinite(float(out)), "hitLoop %s: checksum %s"
+               % (model, out.strip()))
 
 
 def main():
@@ -102,8 +96,7 @@ def main():
     smoke_bench(args.bench)
     smoke_work_precision(args.work_precision)
     smoke_hit_loop(args.hit_loop)
-    if failures:
-        print("TEST FAILED: %d check(s)" % len(failures))
+    if finish():
         sys.exit(1)
     print("all benchmark smoke checks passed")
 

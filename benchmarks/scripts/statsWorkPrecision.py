@@ -25,7 +25,8 @@ import os
 import subprocess
 import time
 
-import benchCommon as bc
+from foamcase import bench as bc
+import foamcase as fc
 
 ALPHAS = "1:1:89"
 DIGITS = "17"      # every double exactly: no printing floor
@@ -110,7 +111,7 @@ def measure(args):
 
 
 def load():
-    rows = bc.read_csv("stats-work-precision.csv")
+    rows = fc.read_csv(bc.result("stats-work-precision.csv"))
     floor = float(open(os.path.join(bc.RESULTS, "stats-floor.txt")).read())
     return rows, floor
 

@@ -41,7 +41,8 @@ import os
 import shutil
 import subprocess
 
-import benchCommon as bc
+from foamcase import bench as bc
+import foamcase as fc
 
 TUTORIAL = os.path.join(bc.ROOT, "tutorials", "incompressibleFluid",
                         "horizontalChannel")
@@ -77,8 +78,8 @@ def run_config(tut, platform, name, variant, parcels, spin_up, sampling, dt):
     with open(os.path.join(tut, "log.%s" % name), "w") as f:
         subprocess.run(cmd, cwd=tut, stdout=f, stderr=subprocess.STDOUT,
                        env=env, check=True)
-    summary = bc.read_csv(os.path.join(out, "summary.csv"))[0]
-    profile = bc.read_csv(os.path.join(out, "profiles.csv"))
+    summary = fc.read_csv(os.path.join(out, "summary.csv"))[0]
+    profile = fc.read_csv(os.path.join(out, "profiles.csv"))
     return summary, profile
 
 
@@ -137,7 +138,7 @@ def measure(args):
 
 
 def load():
-    return bc.read_csv("tutorial-work-precision.csv")
+    return fc.read_csv(bc.result("tutorial-work-precision.csv"))
 
 
 def vec(s):

@@ -28,7 +28,7 @@ import os
 
 import numpy as np
 
-import foamTestCase as t
+from foamcase import testing as t
 import foamcase as fc
 
 END_TIME = "0.05"

@@ -27,7 +27,7 @@ import argparse
 import os
 import shutil
 
-import foamTestCase as t
+from foamcase import testing as t
 import foamcase as fc
 
 ROUGH = {

@@ -40,9 +40,9 @@ import os
 
 import numpy as np
 
-import foamTestCase as t
+from foamcase import testing as t
 import foamcase as fc
-import roughWallOracle
+from foamcase import roughWallOracle
 
 END_TIME = "0.05"
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """roughVelocity, the rough wall of OpenFOAM-13's and -14's field-based
 Lagrangian (a velocity condition of the cloud, libLagrangianCloud), in a
-kinematicParticle cloud without forces (tests/openfoam/lagrangianCase.py).
+kinematicParticle cloud without forces (src/python/foamcase/lagrangianCase.py).
 
 --test flatWall: 10000 particles per incidence angle (10, 30, 60 deg,
     1 m/s, one diameter per angle: 100, 110, 120 um) fired from y = 5 mm at
@@ -9,7 +9,7 @@ kinematicParticle cloud without forces (tests/openfoam/lagrangianCase.py).
     another roughnessAngle, e.g. a table against the diameter), read at
     t = 0.05 s when each has hit the wall once.  Checks: no particle lost,
     every one leaves the wall; mean and sd of k_n and k_t per angle against
-    the oracle (tests/oracle/roughWallOracle.py, an independent numpy Monte
+    the oracle (src/python/foamcase/roughWallOracle.py, an independent numpy Monte
     Carlo of the operator without spin, 1e6 samples) within 4 combined
     standard errors; --twoD: the case is 2-D (empty front and back) and
     U_z = 0 exactly.
@@ -57,9 +57,9 @@ import shutil
 
 import numpy as np
 
-import foamTestCase as t
+from foamcase import testing as t
 import foamcase as fc
-import lagrangianCase as lc
+from foamcase import lagrangianCase as lc
 
 ROUGH = "type roughVelocity; e 0.8; mu0 0.4; muD 0.4; roughnessAngle %s;"
 ESCAPE = "type escapeVelocity;"

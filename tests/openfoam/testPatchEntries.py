@@ -34,7 +34,7 @@ import os
 
 import numpy as np
 
-import foamTestCase as t
+from foamcase import testing as t
 import foamcase as fc
 
 ROUGH = "type rough; e 0.8; mu0 0.4; muD 0.4; roughnessAngle 8;"

@@ -18,7 +18,7 @@ SPDX-License-Identifier: GPL-3.0-or-later
 
 import os
 
-import foamTestCase as t
+from foamcase import testing as t
 import foamcase as fc
 import testBadInput as b
 

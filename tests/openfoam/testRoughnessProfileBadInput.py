@@ -3,7 +3,7 @@
 stops the run with a FatalIOError naming the dictionary, the keyword
 profile, the file and, for a bad line, its number.
 
-Control: a valid trace (roughnessProfileOracle.py's) given by a path
+Control: a valid trace (foamcase/roughnessProfileOracle.py's) given by a path
 relative to the case runs, and so does one given as $FOAM_CASE/...; the
 profile parameters with an unknown estimate stop.  Then one run per bad
 file: unreadable (missing), fewer than 10 points, x not increasing, NaN, a
@@ -20,9 +20,9 @@ SPDX-License-Identifier: GPL-3.0-or-later
 
 import os
 
-import foamTestCase as t
+from foamcase import testing as t
 import foamcase as fc
-import roughnessProfileOracle as profileOracle
+from foamcase import roughnessProfileOracle as profileOracle
 import testBadInput as b
 
 

@@ -17,7 +17,7 @@ the paper (x = t along the incident tangential velocity, y = N, z = t x N):
 
 --twoD: the one-cell-thick case (spin about z only, no lateral tilt);
 otherwise 3-D with lateralTilt on.  Oracle: roughWallOracle.rebound
-(tests/oracle/roughWallOracle.py, an independent numpy Monte Carlo written
+(src/python/foamcase/roughWallOracle.py, an independent numpy Monte Carlo written
 from the model notes) with the same incident velocity and angular velocity,
 4e5 samples per group (PCG64, seed 11).  Compared per group, within 4
 combined standard errors: mean and sd of k_n = -V''.N/V'.N,
@@ -39,9 +39,9 @@ import os
 
 import numpy as np
 
-import foamTestCase as t
+from foamcase import testing as t
 import foamcase as fc
-import roughWallOracle as oracle
+from foamcase import roughWallOracle as oracle
 
 E, MU0, MUD, DELTA_DEG = 0.8, 0.4, 0.4, 8.0
 RHO_P = 2500.0

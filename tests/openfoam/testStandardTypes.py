@@ -35,7 +35,7 @@ import os
 
 import numpy as np
 
-import foamTestCase as t
+from foamcase import testing as t
 import foamcase as fc
 
 #: wall type, its coefficients, outlet type, end time

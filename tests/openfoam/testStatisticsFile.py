@@ -25,7 +25,7 @@ computed from the parcels:
                slip: n || dv + (2/7) v) or |j_t| = muD j_n along the slip
                (sliding: n is dv turned by atan(muD)); the candidate is kept
                whose collision, computed by the oracle's facet_collision
-               (tests/oracle/roughWallOracle.py), reproduces the parcel's
+               (src/python/foamcase/roughWallOracle.py), reproduces the parcel's
                rebound to 1e-9; gamma = atan2(-n.t, n.N) in DEGREES.  At
                normal incidence the tilt direction t is drawn by the model,
                so only |gamma| is known there: upperWall's meanGamma is
@@ -66,9 +66,9 @@ import shutil
 
 import numpy as np
 
-import foamTestCase as t
+from foamcase import testing as t
 import foamcase as fc
-import roughWallOracle as oracle
+from foamcase import roughWallOracle as oracle
 
 E, MU0, MUD, DELTA_DEG = 0.8, 0.1, 0.1, 6.0
 

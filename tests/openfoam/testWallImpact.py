@@ -7,7 +7,7 @@ velocities at the end time, when each has hit the wall exactly once.
 Checks:
   - no parcel is lost, every parcel leaves the wall (v_y > 0);
   - mean and sd of k_n = -v''_y/v'_y and k_t = v''_x/v'_x (relative to the
-    wall) per angle agree with the oracle (tests/oracle/roughWallOracle.py,
+    wall) per angle agree with the oracle (src/python/foamcase/roughWallOracle.py,
     an independent numpy Monte Carlo of the operator, 1e6 samples) within 4
     combined standard errors;
   - the statistics file (reduced over processors in parallel) counts every
@@ -34,7 +34,7 @@ diameter (docs/roughWallInteraction.md, equation (1), evaluated here; so
 the parameters must say estimate closedForm).
 --profile: the wall given by a measured trace, roughness { profile
 "constant/wallProfile"; } (a path relative to the case), the trace of
-roughnessProfileOracle.py; the reference of each size class is that of the
+foamcase/roughnessProfileOracle.py; the reference of each size class is that of the
 constant Delta(d) the rolling-sphere envelope gives for its diameter,
 computed by that module's brute force (not by the library); the log must
 state the tabulation.
@@ -59,9 +59,9 @@ import re
 
 import numpy as np
 
-import foamTestCase as t
+from foamcase import testing as t
 import foamcase as fc
-import roughnessProfileOracle as profileOracle
+from foamcase import roughnessProfileOracle as profileOracle
 
 END_TIME = "0.05"
 

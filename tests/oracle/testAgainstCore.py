@@ -2,7 +2,7 @@
 the particle leaves, fallback at the bound, spin, lateral tilt) against the
 C++ core's own Monte Carlo: two independent implementations.
 
-1. roughWallReference (tests/openfoam/roughWallReference.cc: the core's
+1. roughWallReference (tests/oracle/roughWallReference.cc: the core's
    collideWithRoughWall, 3-D, v = (cos a, -sin a, 0) on the wall y = 0,
    mt19937_64): mean and sd of k_n and k_t. Cases (spin; lateral; Delta; e,
    mu0, muD; max facet collisions; alpha):
@@ -34,13 +34,15 @@ import sys
 sys.dont_write_bytecode = True   # keep the source tree clean
 
 import math
+import io
 import subprocess
 
 import numpy as np
 
-from oracleTestSupport import (Checker, tool_arguments, find_tool, read_csv,
-                               STATS_CANDIDATES, REFERENCE_CANDIDATES)
-import roughWallOracle as rwo
+from foamcase.checking import Checker
+from foamcase.tables import read_csv
+from foamcase.oracleTesting import (tool_arguments, find_tool, STATS_CANDIDATES, REFERENCE_CANDIDATES)
+from foamcase import roughWallOracle as rwo
 
 SAMPLES = 500_000
 
@@ -76,7 +78,7 @@ def run_reference(ref, spin, lateral, Delta, e, mu0, muD, mf, alphas, seed):
            "--lateralTilt", str(lateral), "--maxFacetCollisions", str(mf),
            "--samples", str(SAMPLES), "--seed", str(seed)]
     out = subprocess.run(cmd, capture_output=True, text=True, check=True)
-    return read_csv(out.stdout)
+    return read_csv(io.StringIO(out.stdout), numbers=True)
 
 
 def run_stats_mc(stats, Delta, alpha, mf, lateral, seed):
@@ -87,7 +89,7 @@ def run_stats_mc(stats, Delta, alpha, mf, lateral, seed):
     if lateral:
         cmd.append("--lateral")
     out = subprocess.run(cmd, capture_output=True, text=True, check=True)
-    return read_csv(out.stdout)[0]
+    return read_csv(io.StringIO(out.stdout), numbers=True)[0]
 
 
 def compare(c, tag, o, r, keys):

@@ -24,13 +24,15 @@ import sys
 sys.dont_write_bytecode = True   # keep the source tree clean
 
 import math
+import io
 import subprocess
 
 import numpy as np
 
-from oracleTestSupport import (Checker, tool_arguments, find_tool, read_csv,
-                               STATS_CANDIDATES)
-import roughWallOracle as rwo
+from foamcase.checking import Checker
+from foamcase.tables import read_csv
+from foamcase.oracleTesting import (tool_arguments, find_tool, STATS_CANDIDATES)
+from foamcase import roughWallOracle as rwo
 
 SAMPLES = 300_000
 
@@ -53,7 +55,7 @@ def quadrature(stats, Delta, e, mu0, muD, alphas):
            "--mud", repr(muD), "--alpha", ",".join(str(a) for a in alphas),
            "--threads", "1", "--digits", "15"]
     out = subprocess.run(cmd, capture_output=True, text=True, check=True)
-    return read_csv(out.stdout)
+    return read_csv(io.StringIO(out.stdout), numbers=True)
 
 
 def main():

@@ -30,8 +30,8 @@ import math
 
 import numpy as np
 
-from oracleTestSupport import Checker
-import roughWallOracle as rwo
+from foamcase.checking import Checker
+from foamcase import roughWallOracle as rwo
 
 TOL = 1e-12
 

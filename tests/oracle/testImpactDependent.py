@@ -30,14 +30,16 @@ import sys
 sys.dont_write_bytecode = True   # keep the source tree clean
 
 import os
+import io
 import subprocess
 import tempfile
 
 import numpy as np
 
-from oracleTestSupport import (Checker, tool_arguments, find_tool, read_csv,
-                               STATS_CANDIDATES)
-import roughWallOracle as rwo
+from foamcase.checking import Checker
+from foamcase.tables import read_csv
+from foamcase.oracleTesting import (tool_arguments, find_tool, STATS_CANDIDATES)
+from foamcase import roughWallOracle as rwo
 
 E_TABLE = [(0, 0.95), (30, 0.8), (60, 0.65), (90, 0.6)]
 MU0_TABLE = [(0, 0.5), (20, 0.35), (45, 0.2), (90, 0.15)]
@@ -59,7 +61,7 @@ def run(stats, args):
                          capture_output=True, text=True)
     if out.returncode != 0:
         raise RuntimeError(f"roughWallStats {' '.join(args)}: {out.stderr}")
-    return read_csv(out.stdout)
+    return read_csv(io.StringIO(out.stdout), numbers=True)
 
 
 def main():

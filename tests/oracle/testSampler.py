@@ -29,8 +29,8 @@ import math
 
 import numpy as np
 
-from oracleTestSupport import Checker
-import roughWallOracle as rwo
+from foamcase.checking import Checker
+from foamcase import roughWallOracle as rwo
 
 KS_SAMPLES = 200_000
 KS_LEVEL = 1e-3

@@ -10,24 +10,15 @@ import os
 import subprocess
 import sys
 
+from foamcase.checking import TestFailure, check
 HEADER = ("alpha_deg,mean_kn,sd_kn,mean_abs_kn,mean_kt,sd_kt,mean_kOmega,sd_kOmega,"
           "p_noslip,p_wallward").split(",")
-
-
-class Failure(Exception):
-    pass
-
-
-def check(condition, message):
-    if not condition:
-        raise Failure(message)
-    print("ok:", message)
 
 
 def run(binary, *args, expect=0):
     result = subprocess.run([binary, *args], capture_output=True, text=True, timeout=300)
     if result.returncode != expect:
-        raise Failure("%s %s: exit code %d, expected %d\nstdout: %s\nstderr: %s" % (
+        raise TestFailure("%s %s: exit code %d, expected %d\nstdout: %s\nstderr: %s" % (
             binary, " ".join(args), result.returncode, expect, result.stdout[-2000:],
             result.stderr[-2000:]))
     return result
@@ -173,10 +164,10 @@ def case_digits(binary, work):
             # %.17g identifies the double: printing it again gives the same
             # text, and rounding it to 12 digits gives the default's text
             if "%.17g" % x != b or "%.12g" % x != a:
-                raise Failure("alpha %s, %s: '%s' is not %%.17g, or not '%s' at 12 digits" % (
+                raise TestFailure("alpha %s, %s: '%s' is not %%.17g, or not '%s' at 12 digits" % (
                     r12["alpha_deg"], key, b, a))
             if abs(float(a) - x) > 5e-12 * abs(x):
-                raise Failure("alpha %s, %s: 12 digits %s against 17 digits %s" % (
+                raise TestFailure("alpha %s, %s: 12 digits %s against 17 digits %s" % (
                     r12["alpha_deg"], key, a, b))
             values += 1
             longer += significant_digits(b) > 12
@@ -298,7 +289,7 @@ def main():
     os.makedirs(args.work, exist_ok=True)
     try:
         globals()["case_" + args.case](args.binary, args.work)
-    except Failure as failure:
+    except TestFailure as failure:
         print("TEST FAILED:", failure)
         return 1
     print("all checks passed")

@@ -18,13 +18,7 @@ import math
 import subprocess
 import sys
 
-FAILED = []
-
-
-def check(ok, message):
-    print(("ok    " if ok else "FAIL  ") + message)
-    if not ok:
-        FAILED.append(message)
+from foamcase.checking import expect, finish
 
 
 def run(binary, *args):
@@ -67,18 +61,18 @@ def main():
                            "--alpha", alphas)
         rc_ref, out_ref, _ = run(binary, "--Delta", "%.17g" % delta,
                                  "--alpha", alphas)
-        check(rc == 0 and rc_ref == 0, "%s d = %g: runs" % (options, d))
+        expect(rc == 0 and rc_ref == 0, "%s d = %g: runs" % (options, d))
         head, rows = table(out)
         head_ref, rows_ref = table(out_ref)
         worst = max(abs(a - b) / max(abs(b), 1e-12)
                     for row, ref in zip(rows, rows_ref)
                     for a, b in zip(row, ref))
-        check(head == head_ref and len(rows) == len(rows_ref)
-              and worst < 1e-9,
-              "%s d = %g: the table of Delta = %.6f deg (largest relative "
-              "difference %.2g)" % (options, d, delta, worst))
-        check("Delta = %.6g deg" % delta in err,
-              "%s d = %g: stderr states Delta = %.6g deg" % (options, d, delta))
+        expect(head == head_ref and len(rows) == len(rows_ref)
+               and worst < 1e-9,
+               "%s d = %g: the table of Delta = %.6f deg (largest relative "
+               "difference %.2g)" % (options, d, delta, worst))
+        expect("Delta = %.6g deg" % delta in err,
+               "%s d = %g: stderr states Delta = %.6g deg" % (options, d, delta))
 
     for options, named in [
         (["--Ra", "-1e-6", "--RSm", "60e-6", "--diameter", "1e-4"], "--Ra"),
@@ -97,12 +91,10 @@ def main():
         (["--Rz", "3e-6", "--RSm", "6e-6", "--diameter", "1e-4"], "--RSm"),
     ]:
         rc, _, err = run(binary, *options)
-        check(rc == 2 and named in err,
-              "%s: exit code 2 (%d), names %s" % (" ".join(options), rc, named))
+        expect(rc == 2 and named in err,
+               "%s: exit code 2 (%d), names %s" % (" ".join(options), rc, named))
 
-    if FAILED:
-        print("TEST FAILED: %d check(s)" % len(FAILED))
-        sys.exit(1)
+    sys.exit(finish())
 
 
 if __name__ == "__main__":

@@ -31,13 +31,7 @@ import sys
 
 import numpy as np
 
-FAILED = []
-
-
-def check(ok, message):
-    print(("ok    " if ok else "FAIL  ") + message)
-    if not ok:
-        FAILED.append(message)
+from foamcase.checking import expect, finish
 
 
 def run(binary, *args):
@@ -77,23 +71,23 @@ def sinusoid(binary, work):
         path = os.path.join(work, "sinusoid-%g.txt" % frac)
         write(path, ["%.17g %.17g" % p for p in zip(x, z)])
         rc, out, err = run(binary, "--profile", path, "--d", repr(2 * r), "--digits", 17)
-        check(rc == 0, "sinusoid r = %g rho: runs (%s)" % (frac, err.strip()[:200]))
+        expect(rc == 0, "sinusoid r = %g rho: runs (%s)" % (frac, err.strip()[:200]))
         if rc != 0:
             continue
         row = table(out)[0]
         delta = math.degrees(math.sqrt(m2))
         # O(h^2) polyline error (a k h)^2 and the levelling's residual line
         tol = 2 * (a * 2 * math.pi / L * h) ** 2 / m2 + 1e-5
-        check(abs(row["Delta_deg"] / delta - 1) < tol,
-              "sinusoid r = %g rho: Delta %.9f deg = %.9f deg (oracle)"
-              % (frac, row["Delta_deg"], delta))
-        check(abs(row["excess_kurtosis"] - kurtosis) < 1e-3,
-              "sinusoid r = %g rho: excess kurtosis %.6f = %.6f (oracle)"
-              % (frac, row["excess_kurtosis"], kurtosis))
-        check(abs(row["skewness"]) < 1e-3, "sinusoid r = %g rho: skewness %.2g = 0"
-              % (frac, row["skewness"]))
-        check(abs(row["length_m"] - periods * L) < 1e-9 * L,
-              "sinusoid r = %g rho: covers %d periods" % (frac, periods))
+        expect(abs(row["Delta_deg"] / delta - 1) < tol,
+               "sinusoid r = %g rho: Delta %.9f deg = %.9f deg (oracle)"
+               % (frac, row["Delta_deg"], delta))
+        expect(abs(row["excess_kurtosis"] - kurtosis) < 1e-3,
+               "sinusoid r = %g rho: excess kurtosis %.6f = %.6f (oracle)"
+               % (frac, row["excess_kurtosis"], kurtosis))
+        expect(abs(row["skewness"]) < 1e-3, "sinusoid r = %g rho: skewness %.2g = 0"
+               % (frac, row["skewness"]))
+        expect(abs(row["length_m"] - periods * L) < 1e-9 * L,
+               "sinusoid r = %g rho: covers %d periods" % (frac, periods))
         if frac == 0.5:
             # The same trace in mm and um, with a header and comments
             other = os.path.join(work, "sinusoid-mm.csv")
@@ -103,8 +97,8 @@ def sinusoid(binary, work):
             rc2, out2, _ = run(binary, "--profile", other, "--d", repr(2 * r),
                                "--digits", 17)
             row2 = table(out2)[0] if rc2 == 0 else {}
-            check(rc2 == 0 and abs(row2["Delta_deg"] / row["Delta_deg"] - 1) < 1e-12,
-                  "sinusoid in mm/um with a header: the same Delta")
+            expect(rc2 == 0 and abs(row2["Delta_deg"] / row["Delta_deg"] - 1) < 1e-12,
+                   "sinusoid in mm/um with a header: the same Delta")
 
 
 def flat(binary, work):
@@ -112,8 +106,8 @@ def flat(binary, work):
     write(path, ["%g 2e-6" % (i * 1e-6) for i in range(400)])
     rc, out, err = run(binary, "--profile", path, "--d", "20e-6,100e-6")
     rows = table(out) if rc == 0 else []
-    check(rc == 0 and len(rows) == 2 and all(r["Delta_deg"] == 0 for r in rows),
-          "flat trace: Delta = 0 (%s)" % err.strip()[:200])
+    expect(rc == 0 and len(rows) == 2 and all(r["Delta_deg"] == 0 for r in rows),
+           "flat trace: Delta = 0 (%s)" % err.strip()[:200])
 
 
 def synthetic(binary, work):
@@ -123,30 +117,30 @@ def synthetic(binary, work):
     limit = math.degrees(math.sqrt(np.sum(wg * np.arctan(sigma * xg) ** 2) / np.sum(wg)))
     ds = "3e-6,60e-6,600e-6"
     rc, out, err = run(binary, "--Rq", Rq, "--RSm", RSm, "--d", ds, "--digits", 17)
-    check(rc == 0, "synthetic: runs")
+    expect(rc == 0, "synthetic: runs")
     rows = table(out)
-    check(abs(rows[0]["Delta_deg"] / limit - 1) < 0.02,
-          "synthetic d = RSm/20: Delta %.4f deg = small-sphere limit %.4f deg within 2 %%"
-          % (rows[0]["Delta_deg"], limit))
+    expect(abs(rows[0]["Delta_deg"] / limit - 1) < 0.02,
+           "synthetic d = RSm/20: Delta %.4f deg = small-sphere limit %.4f deg within 2 %%"
+           % (rows[0]["Delta_deg"], limit))
     for row in rows:
         closed = math.degrees(math.atan(2 * math.pi * Rq / max(RSm, row["d_m"])))
-        check(abs(row["closed_form_deg"] - closed) < 1e-12 * closed,
-              "synthetic d = %g: closed form %.6f deg (typed)" % (row["d_m"], closed))
-    check(rows[2]["Delta_deg"] < rows[1]["Delta_deg"] < rows[0]["Delta_deg"],
-          "synthetic: Delta falls with d")
-    check("5000 RSm" in err and "seed 1" in err, "synthetic: stderr describes the profile")
+        expect(abs(row["closed_form_deg"] - closed) < 1e-12 * closed,
+               "synthetic d = %g: closed form %.6f deg (typed)" % (row["d_m"], closed))
+    expect(rows[2]["Delta_deg"] < rows[1]["Delta_deg"] < rows[0]["Delta_deg"],
+           "synthetic: Delta falls with d")
+    expect("5000 RSm" in err and "seed 1" in err, "synthetic: stderr describes the profile")
     for option, value in (("--Ra", Rq / math.sqrt(math.pi / 2)), ("--Rz", Rq * 4.11)):
         rc2, out2, err2 = run(binary, option, "%.17g" % value, "--RSm", RSm, "--d", ds,
                               "--digits", 17)
         rows2 = table(out2) if rc2 == 0 else []
         same = len(rows2) == 3 and all(
             abs(a["Delta_deg"] / b["Delta_deg"] - 1) < 1e-9 for a, b in zip(rows2, rows))
-        check(same and "as for a Gaussian profile" in err2,
-              "synthetic %s: the table of --Rq %.3g, conversion stated" % (option, Rq))
+        expect(same and "as for a Gaussian profile" in err2,
+               "synthetic %s: the table of --Rq %.3g, conversion stated" % (option, Rq))
     rc3, out3, _ = run(binary, "--Rq", Rq, "--RSm", RSm, "--d", "60e-6", "--seed", 2,
                        "--digits", 17)
-    check(rc3 == 0 and table(out3)[0]["Delta_deg"] != rows[1]["Delta_deg"],
-          "synthetic: --seed changes the profile")
+    expect(rc3 == 0 and table(out3)[0]["Delta_deg"] != rows[1]["Delta_deg"],
+           "synthetic: --seed changes the profile")
 
 
 def bad_input(binary, work):
@@ -168,12 +162,12 @@ def bad_input(binary, work):
         path = os.path.join(work, name)
         write(path, lines)
         rc, out, err = run(binary, "--profile", path, "--d", "2e-6")
-        check(rc == 2 and (path + expected) in err,
-              "%s: exit 2 and '%s%s' (got %d: %s)" % (name, path, expected, rc,
+        expect(rc == 2 and (path + expected) in err,
+               "%s: exit 2 and '%s%s' (got %d: %s)" % (name, path, expected, rc,
                                                       err.strip()[:200]))
     missing = os.path.join(work, "missing.txt")
     rc, out, err = run(binary, "--profile", missing, "--d", "2e-6")
-    check(rc == 2 and missing + ": cannot open" in err, "missing file named")
+    expect(rc == 2 and missing + ": cannot open" in err, "missing file named")
     for args, named in [
         (["--profile", good, "--d", "-1e-6"], "--d values must be"),
         (["--profile", good], "--profile needs --d"),
@@ -186,11 +180,11 @@ def bad_input(binary, work):
         (["--Rq", "1e-6", "--RSm", "6e-5", "--d", "1e-5,x"], "--d needs a finite number"),
     ]:
         rc, out, err = run(binary, *args)
-        check(rc == 2 and named in err, "%s: exit 2 and '%s' (got %d: %s)"
-              % (" ".join(args[-4:]), named, rc, err.strip()[:200]))
+        expect(rc == 2 and named in err, "%s: exit 2 and '%s' (got %d: %s)"
+               % (" ".join(args[-4:]), named, rc, err.strip()[:200]))
     rc, out, err = run(binary, "--profile", good, "--d", "200e-6")
-    check(rc == 1 and "not longer than the diameter" in err,
-          "trace shorter than the diameter: exit 1, said (%s)" % err.strip()[:200])
+    expect(rc == 1 and "not longer than the diameter" in err,
+           "trace shorter than the diameter: exit 1, said (%s)" % err.strip()[:200])
 
 
 def plot(binary, work):
@@ -203,7 +197,7 @@ def plot(binary, work):
     if ok:
         with open(png, "rb") as f:
             ok = f.read(8) == b"\x89PNG\r\n\x1a\n"
-    check(ok, "--plot writes a PNG (%s)" % err.strip()[:200])
+    expect(ok, "--plot writes a PNG (%s)" % err.strip()[:200])
 
 
 def main():
@@ -217,8 +211,7 @@ def main():
     os.makedirs(work, exist_ok=True)
     {"sinusoid": sinusoid, "flat": flat, "synthetic": synthetic,
      "badInput": bad_input, "plot": plot}[args.case](args.binary, work)
-    if FAILED:
-        print("TEST FAILED: %d checks" % len(FAILED))
+    if finish():
         return 1
     print("all checks passed")
     return 0

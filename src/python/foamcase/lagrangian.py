@@ -24,6 +24,18 @@ def processor_roots(case):
     return procs if procs else [case]
 
 
+def time_dirs(case):
+    """The time folders of the case (of processor0 when decomposed), as
+    (value, name), sorted by value."""
+    times = []
+    for name in os.listdir(processor_roots(case)[0]):
+        try:
+            times.append((float(name), name))
+        except ValueError:
+            pass
+    return sorted(times)
+
+
 def cloud_dirs(case, time_name, cloud):
     """The cloud's Lagrangian folders: the case's or each processor's."""
     return [os.path.join(r, time_name, "lagrangian", cloud)

@@ -82,7 +82,7 @@ import numpy as np
 
 sys.dont_write_bytecode = True
 
-import foamTestCase as t
+from foamcase import testing as t
 import foamcase as fc
 
 #: The tutorial, relative to $WM_PROJECT_DIR

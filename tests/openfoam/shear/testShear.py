@@ -87,8 +87,8 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
-import spinCase as s
-from spinCase import t
+from foamcase import spinCase as s
+from foamcase import testing as t
 import foamcase as fc
 
 #: Shear rate [1/s] of U = (G y, 0, 0)
@@ -378,7 +378,7 @@ def run_on(case, steps_from_start, log):
     case.set_control(endTime=repr(end), writeControl="timeStep",
                      writeInterval=str(steps_from_start))
     case.solve(log)
-    last = s.time_dirs(case)[-1]
+    last = fc.time_dirs(case.path)[-1]
     t.check(abs(last[0] - end) < 1e-9, "%s: ran to t = %s" % (log, last[1]))
     return last[1]
 
@@ -415,7 +415,7 @@ def run_model(args, platform, model, name):
         spins, key=lambda x: abs(x - d))] * inertia(d) / s.inertia(d), DT,
         3 * DT, "log.%s" % name)
     start = states(case, t1)
-    first = states(case, s.time_dirs(case)[-1][1])
+    first = states(case, fc.time_dirs(case.path)[-1][1])
     if all(first[d]["age"] == start[d]["age"] for d in spins):
         # OpenFOAM-13's frozen carrier writes a time before evolving the
         # cloud for it (and a run that stops there drops that evolution):

@@ -40,8 +40,8 @@ import os
 
 import numpy as np
 
-import spinCase as s
-from spinCase import t
+from foamcase import spinCase as s
+from foamcase import testing as t
 import foamcase as fc
 
 #: Lift parcels: diameter [m], position (cell centres, both sides of x = 0),
@@ -229,7 +229,7 @@ def torque_rotating_fluid(args, platform):
     case.set_control(endTime=repr(end), writeControl="runTime",
                      writeInterval=repr(end))
     case.solve("log.rotating")
-    last = s.time_dirs(case)[-1][1]
+    last = fc.time_dirs(case.path)[-1][1]
     tag = "%s, fluid rotating at %g rad/s" % (label(args), OMEGA_F)
     s.check_processors(case, last, tag)
     final = s.parcels_by_diameter(case, last, [p[0] for p in TORQUE_PARCELS],

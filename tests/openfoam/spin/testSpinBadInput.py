@@ -24,8 +24,8 @@ import argparse
 import os
 import re
 
-import spinCase as s
-from spinCase import t
+from foamcase import spinCase as s
+from foamcase import testing as t
 import foamcase as fc
 
 #: Signs of a crash instead of a clean fatal error (a stack trace)

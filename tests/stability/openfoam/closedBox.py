@@ -33,7 +33,7 @@ import statistics
 
 import numpy as np
 
-import foamTestCase as t
+from foamcase import testing as t
 import foamcase as fc
 
 BOX = t.BOX

@@ -32,7 +32,7 @@ import os
 
 import numpy as np
 
-import foamTestCase as t
+from foamcase import testing as t
 import foamcase as fc
 
 BOX = t.BOX

@@ -21,7 +21,7 @@ import sys
 import numpy as np
 
 import foamcase as fc
-import tutorialCommon as tc
+from foamcase import tutorial as tc
 
 
 def time_dirs(case):

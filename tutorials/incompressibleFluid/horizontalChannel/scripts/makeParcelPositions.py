@@ -14,7 +14,7 @@ import sys
 import numpy as np
 
 import foamcase as fc
-import tutorialCommon as tc
+from foamcase import tutorial as tc
 
 
 def main():

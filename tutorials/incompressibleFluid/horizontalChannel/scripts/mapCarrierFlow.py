@@ -33,7 +33,7 @@ import sys
 import numpy as np
 
 import foamcase as fc
-import tutorialCommon as tc
+from foamcase import tutorial as tc
 
 FIELDS = ("U", "k", "omega", "nut")
 

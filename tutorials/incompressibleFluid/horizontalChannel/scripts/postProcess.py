@@ -51,7 +51,7 @@ import sys
 import numpy as np
 
 import foamcase as fc
-import tutorialCommon as tc
+from foamcase import tutorial as tc
 
 import matplotlib
 matplotlib.use("Agg")

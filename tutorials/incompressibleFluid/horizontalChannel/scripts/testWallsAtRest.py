@@ -44,7 +44,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 TUTORIAL = os.path.dirname(HERE)
 
 import foamcase as fc
-import tutorialCommon as tc
+from foamcase import tutorial as tc
 
 VARIANT = "rough5"
 PARCELS = 400

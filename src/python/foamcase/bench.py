@@ -1,6 +1,7 @@
 # roughWallInteraction benchmarks: shared helpers of the benchmark scripts.
 # Copyright (C) 2026 roughWallInteraction authors. SPDX-License-Identifier: GPL-3.0-or-later
-"""Paths, machine description, running Google Benchmark binaries."""
+"""Paths, machine description, running Google Benchmark binaries (the
+benchmark scripts import it as bc)."""
 import datetime
 import json
 import os
@@ -8,7 +9,7 @@ import platform
 import re
 import subprocess
 
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
 RESULTS = os.path.join(ROOT, "benchmarks", "results")
 FIGURES = os.path.join(ROOT, "docs", "figures")
 
@@ -42,11 +43,10 @@ def write_csv(name, rows):
         w.writerows(rows)
 
 
-def read_csv(name):
-    """The rows of benchmarks/results/name (or of name if absolute), as dicts"""
-    import csv
-    with open(os.path.join(RESULTS, name)) as f:
-        return list(csv.DictReader(f))
+def result(name):
+    """The path of benchmarks/results/name (name itself if absolute); read
+    it with foamcase.read_csv."""
+    return os.path.join(RESULTS, name)
 
 
 def ensure_dirs():

@@ -17,7 +17,8 @@ variant, parcels, steps, s/step, ns per parcel-step and the extra ns per
 parcel-step over "none".
 
 Usage (in one platform's environment):
-  etc/openfoamEnv openfoam13 python3 tests/openfoam/spin/benchSpin.py \\
+  PYTHONPATH=src/python etc/openfoamEnv openfoam13 python3 \\
+      benchmarks/scripts/benchSpin.py \\
       --platform openfoam13 --work build/benchSpin --output spin-cost.csv
 
 SPDX-License-Identifier: GPL-3.0-or-later
@@ -30,8 +31,8 @@ import re
 
 import numpy as np
 
-import spinCase as s
-from spinCase import t
+from foamcase import spinCase as s
+from foamcase import testing as t
 import foamcase as fc
 
 VARIANTS = {

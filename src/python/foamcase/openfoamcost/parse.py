@@ -8,13 +8,14 @@ import collections
 import re
 import subprocess
 
-import benchCommon as bc
+from foamcase import bench as bc
+import foamcase as fc
 
 from .case import BASE
 
 
 def load_rows(tag):
-    rows = bc.read_csv("openfoam-cost.%s.csv" % tag)
+    rows = fc.read_csv(bc.result("openfoam-cost.%s.csv" % tag))
     for r in rows:
         r.setdefault("mesh", "box")
         r.setdefault("check", "")

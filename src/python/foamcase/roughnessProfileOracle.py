@@ -47,7 +47,7 @@ def write_profile(path):
     """Write the trace in micrometres, with a header and a units line."""
     x, z = profile()
     with open(path, "w") as f:
-        f.write("# test trace of roughnessProfileOracle.py\n")
+        f.write("# test trace of foamcase/roughnessProfileOracle.py\n")
         f.write("# units um um\n")
         f.write("x_um z_um\n")
         for xi, zi in zip(x, z):

@@ -12,7 +12,7 @@ import shutil
 import subprocess
 import sys
 
-import benchCommon as bc
+from foamcase import bench as bc
 import foamcase as fc
 
 from .case import (MESH_NAMES, MODEL_FILE, ONE_BOX, TUTORIAL_BASE,

@@ -1,6 +1,6 @@
 """The spin cases of the OpenFOAM tests and benchmark of rotationalLift and
-fluidTorque (tests/openfoam/spin), on top of the shared harness
-tests/openfoam/foamTestCase.py: a 0.2 x 0.1 x 0.1 m box of 1 cm cells
+fluidTorque (tests/openfoam/spin, benchmarks/scripts/benchSpin.py), on top
+of the shared harness foamcase.testing: a 0.2 x 0.1 x 0.1 m box of 1 cm cells
 (template tests/openfoam/spin/case), a few parcels near its middle that
 never reach a wall, no forces but the spin models, a frozen carrier (uniform
 stream, still air or solid-body rotation about z through (0, 0.05, 0)).
@@ -28,13 +28,14 @@ numpy only.  SPDX-License-Identifier: GPL-3.0-or-later
 
 import math
 import os
-import re
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+#: The folder of the spin tests and their case template
+HERE = os.path.join(os.path.abspath(os.path.join(
+    os.path.dirname(__file__), "..", "..", "..")), "tests", "openfoam", "spin")
 
-import foamTestCase as t
+from foamcase import testing as t
 import foamcase as fc
 
 #: The case template
@@ -132,19 +133,6 @@ def mesh(case, nprocs, before_decompose=None):
         case.run(["decomposePar"], "log.decomposePar")
 
 
-def time_dirs(case):
-    """The time folders of the case (of processor0 when decomposed), as
-    (value, name), sorted."""
-    root = fc.processor_roots(case.path)[0]
-    times = []
-    for name in os.listdir(root):
-        try:
-            times.append((float(name), name))
-        except ValueError:
-            pass
-    return sorted(times)
-
-
 def set_spins(case, time_name, spin_of_d):
     """Rewrite angularMomentum at time_name in every cloud folder: the parcel
     of diameter d gets I(d) spin_of_d(d).  Returns the number of parcels."""
@@ -173,14 +161,14 @@ def restart_with_spin(case, spin_of_d, deltaT, end_time, log):
     case.set_control(endTime=repr(2 * deltaT), writeControl="timeStep",
                      writeInterval="2")
     case.solve(log + ".1")
-    (_, t1_name), = [x for x in time_dirs(case) if x[0] > 0]
+    (_, t1_name), = [x for x in fc.time_dirs(case.path) if x[0] > 0]
     n = set_spins(case, t1_name, spin_of_d)
     t.check(n > 0, "%s: spin of %d parcels set at t = %s" % (log, n, t1_name))
     # Written at the end only: time index (steps from 0) of end_time
     case.set_control(endTime=repr(end_time), writeControl="timeStep",
                      writeInterval=str(int(round(end_time / deltaT))))
     case.solve(log + ".2")
-    last = time_dirs(case)[-1]
+    last = fc.time_dirs(case.path)[-1]
     t.check(abs(last[0] - end_time) < 1e-9 * end_time,
             "%s: ran to t = %s" % (log, last[1]))
     return t1_name, last[1]
@@ -300,9 +288,3 @@ def rk4_spin_decay(W0, t_, d, n=20000):
         k4 = rate(W + h * k3)
         W += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
     return W / W0
-
-
-def log_value(text, pattern):
-    """The last number matched by pattern (one group) in a log."""
-    found = re.findall(pattern, text)
-    return float(found[-1]) if found else None

@@ -1,18 +1,17 @@
 """The harness of the OpenFOAM-level tests of roughWallInteraction, for
 all platforms (openfoam13, openfoam14, openfoam1912): assertions (check,
-TestFailure, main), the checks of a platform's environment, the oracle's
-reference statistics, and the test cases (the wall-impact case
-tests/openfoam/wallImpact, the closed box tests/stability/openfoam/closedBox)
-with the checks made on them.
+TestFailure from foamcase.checking; main), the checks of a platform's
+environment, the oracle's reference statistics, and the test cases (the
+wall-impact case tests/openfoam/wallImpact, the closed box
+tests/stability/openfoam/closedBox) with the checks made on them.
 
-Setting up, running and reading cases is the package foamcase
-(src/python/foamcase): the tests import it as fc.
+Setting up, running and reading cases is the rest of the package
+foamcase: the tests import it as fc, and this module as t.
 
 Tests run as  etc/openfoamEnv <platform> /usr/bin/python3 <script>
 --platform <platform> ...: one platform's environment only; main() checks it
 (and, on openfoam13 and openfoam14, that no OpenFOAM library comes from
-Debian's /usr/lib). ctest sets PYTHONPATH to src/python, tests/openfoam
-(this harness) and tests/oracle (the oracle).
+Debian's /usr/lib). ctest sets PYTHONPATH to src/python.
 
 numpy only.
 
@@ -30,35 +29,19 @@ import time
 
 import numpy as np
 
-# The oracle: tests/oracle/roughWallOracle.py, an independent numpy Monte
+# The oracle: src/python/foamcase/roughWallOracle.py, an independent numpy Monte
 # Carlo of the collision operator (its own sampler, no C++ core)
-import roughWallOracle
+from foamcase import roughWallOracle
+# One check for every test script (foamcase.checking); the tests call
+# them as t.check, t.TestFailure
+from foamcase.checking import PASSED, TestFailure, check  # noqa: F401
 from foamcase import (LIBRARY, PLATFORMS, SPIN, FoamCase, FoamError,
                       Injector, Platform, environment_library, find_library,
                       ldd, read_text, write_text)
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-REPO = os.path.dirname(os.path.dirname(HERE))
-
-# ---------------------------------------------------------------------------
-# Assertions
-# ---------------------------------------------------------------------------
-
-
-class TestFailure(Exception):
-    """A failed assertion of a test."""
-
-
-_checks = {"passed": 0}
-
-
-def check(condition, message):
-    """Record one assertion: print it, raise TestFailure if it fails."""
-    print(("PASS  " if condition else "FAIL  ") + message, flush=True)
-    if not condition:
-        raise TestFailure(message)
-    _checks["passed"] += 1
-
+REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
+#: The folder of the OpenFOAM tests and their case templates
+HERE = os.path.join(REPO, "tests", "openfoam")
 
 # ---------------------------------------------------------------------------
 # Platforms
@@ -157,14 +140,14 @@ def main(test, platform_name=None):
         if platform_name is None:
             raise TestFailure("no --platform given")
         check_environment(Platform(platform_name))
-        before = _checks["passed"]
+        before = PASSED[0]
         test()
-        if _checks["passed"] == before:
+        if PASSED[0] == before:
             raise TestFailure("the test made no check")
     except (TestFailure, FoamError) as failure:
         print("TEST FAILED: %s (%.1f s)" % (failure, time.time() - start))
         sys.exit(1)
-    print("TEST PASSED: %d checks (%.1f s)" % (_checks["passed"],
+    print("TEST PASSED: %d checks (%.1f s)" % (PASSED[0],
                                                time.time() - start))
 
 

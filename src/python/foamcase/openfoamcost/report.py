@@ -8,7 +8,7 @@ figure docs/figures/bench-openfoam-scaling-<tag>.png.
 import os
 import statistics
 
-import benchCommon as bc
+from foamcase import bench as bc
 import foamcase as fc
 
 from .case import (BASE, L, MODEL_FILE, TUTORIAL_BASE, TUTORIAL_LIB_VARIANTS,

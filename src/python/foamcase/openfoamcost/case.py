@@ -12,7 +12,7 @@ import random
 import re
 import sys
 
-import benchCommon as bc
+from foamcase import bench as bc
 import foamcase as fc
 
 
