@@ -34,6 +34,8 @@ import math
 import os
 import sys
 
+from foamcase import checking, tables
+
 N_BINS = 25
 MARGIN_SE = 3.0
 VARIANT = "rough5"
@@ -48,24 +50,19 @@ FIGURES = ("concentration.png", "velocity.png", "wallHits.png", "spinUp.png",
            "spinRatios.png")
 TEXT = {"variant", "wallModel", "geometry", "lateralTilt", "lift", "torque"}
 
-failures = []
+failures = checking.FAILED
 #: The quantitative checks: (check, measured, required, margin)
 records = []
 
 
-def check(condition, message):
-    print(("PASS  " if condition else "FAIL  ") + message, flush=True)
-    if not condition:
-        failures.append(message)
-    return condition
+check = checking.expect     # every check runs; the failures are listed at the end
 
 
 def read_csv(path):
     if not os.path.isfile(path) or os.path.getsize(path) == 0:
         check(False, "%s exists and is not empty" % path)
         sys.exit(1)
-    with open(path) as f:
-        return list(csv.DictReader(f))
+    return tables.read_csv(path)
 
 
 def finite_numbers(rows, name, text_columns):

@@ -21,20 +21,14 @@ import sys
 import numpy as np
 
 import foamcase as fc
+from foamcase import lagrangian
 from foamcase import tutorial as tc
 
 
 def time_dirs(case):
-    """Write times (> 0) of a case, as (name, value), sorted."""
-    times = []
-    for name in os.listdir(case):
-        try:
-            value = float(name)
-        except ValueError:
-            continue
-        if value > 0 and os.path.isdir(os.path.join(case, name)):
-            times.append((name, value))
-    return sorted(times, key=lambda t: t[1])
+    """Write times (> 0) of a case, as (name, value), sorted by value."""
+    return [(name, value) for value, name in lagrangian.time_dirs(case)
+            if value > 0]
 
 
 def read_snapshot(case, time, mesh):
