@@ -196,8 +196,10 @@ def failed_tests(output):
 
 
 def ctest(build, regex, log, env, jobs, timeout):
+    # --output-on-failure: the log keeps why each test failed (a kill is
+    # the physics check failing, not a case that does not start)
     cmd = ["ctest", "--test-dir", build, "-R", regex, "-j", str(jobs),
-           "--timeout", str(timeout)]
+           "--timeout", str(timeout), "--output-on-failure"]
     with open(log, "a") as out:
         out.write("\n$ " + " ".join(cmd) + "\n")
     proc = subprocess.run(cmd, capture_output=True, text=True, env=env)
