@@ -459,9 +459,11 @@ def main():
         print("baseline: %d tests pass (%.0f s)" % (ran, time.time() - start),
               flush=True)
 
-    command = "tests/mutation/mutate.py --level %s%s%s" % (
+    command = "tests/mutation/mutate.py --level %s%s%s%s%s" % (
         args.level, " --platform " + args.platform
         if args.level == "openfoam" else "",
+        " --baseline" if args.baseline else "",
+        " --only " + args.only if args.only else "",
         "".join(" --overlay " + o for o in args.overlay))
     rows = []
     for fault in faults:
