@@ -196,8 +196,10 @@ def failed_tests(output):
 
 
 def ctest(build, regex, log, env, jobs, timeout):
+    # --output-on-failure: the log keeps why each test failed (a kill is
+    # the physics check failing, not a case that does not start)
     cmd = ["ctest", "--test-dir", build, "-R", regex, "-j", str(jobs),
-           "--timeout", str(timeout)]
+           "--timeout", str(timeout), "--output-on-failure"]
     with open(log, "a") as out:
         out.write("\n$ " + " ".join(cmd) + "\n")
     proc = subprocess.run(cmd, capture_output=True, text=True, env=env)
@@ -260,6 +262,62 @@ class Builder:
                     self.platform, "bash", "-c", script],
                    self.log, env=self.env, cwd=self.tree) == 0
 
+    def _built(self):
+        """wmake's output of the copy: its objects and dependency files
+        (Make/<WM_OPTIONS>) and the library in the private
+        FOAM_USER_LIBBIN"""
+        paths = []
+        make = os.path.join(self.tree, "Make")
+        for folder, _, files in os.walk(make):
+            if folder != make:  # not Make/files, Make/options
+                paths += [os.path.join(folder, name) for name in files]
+        for folder, _, files in os.walk(os.path.join(self.env["HOME"],
+                                                     "OpenFOAM")):
+            paths += [os.path.join(folder, name) for name in files
+                      if name.startswith("libroughWallInteraction")]
+        return paths
+
+    def snapshot(self):
+        """Keep wmake's output of the unchanged copy (OpenFOAM level).
+        Without it, the build of each fault also recompiled every file that
+        the previous fault touched (its restored text had a new mtime): with
+        reset() after each fault, a fault's build compiles only the files
+        that depend on its own edits, as an incremental build of the
+        unchanged tree with that one edit would"""
+        if self.level != "openfoam":
+            return
+        self.pristine = os.path.join(os.path.dirname(self.tree), "pristine")
+        shutil.rmtree(self.pristine, ignore_errors=True)
+        for path in self._built():
+            target = os.path.join(self.pristine, os.path.relpath(path, "/"))
+            os.makedirs(os.path.dirname(target), exist_ok=True)
+            shutil.copy2(path, target)
+
+    def reset(self):
+        """Put back wmake's output of the unchanged copy, mtimes included;
+        output that the unchanged build did not have is removed"""
+        if self.level != "openfoam":
+            return False
+        for path in self._built():
+            kept = os.path.join(self.pristine, os.path.relpath(path, "/"))
+            if not os.path.exists(kept):
+                os.remove(path)
+        for folder, _, files in os.walk(self.pristine):
+            for name in files:
+                kept = os.path.join(folder, name)
+                path = "/" + os.path.relpath(kept, self.pristine)
+                try:
+                    now = os.stat(path)
+                    then = os.stat(kept)
+                    if (now.st_mtime_ns == then.st_mtime_ns
+                            and now.st_size == then.st_size):
+                        continue
+                except OSError:
+                    pass
+                os.makedirs(os.path.dirname(path), exist_ok=True)
+                shutil.copy2(kept, path)
+        return True
+
 
 def apply(tree, edits):
     originals = {}
@@ -267,7 +325,7 @@ def apply(tree, edits):
         path = os.path.join(tree, edit["file"])
         if path not in originals:
             with open(path) as f:
-                originals[path] = f.read()
+                originals[path] = (f.read(), os.stat(path).st_mtime_ns)
         with open(path) as f:
             text = f.read()
         with open(path, "w") as f:
@@ -275,13 +333,18 @@ def apply(tree, edits):
     return originals
 
 
-def restore(originals):
-    for path, text in originals.items():
+def restore(originals, keep_mtime=False):
+    for path, (text, mtime) in originals.items():
         with open(path, "w") as f:
             f.write(text)
-        # A new mtime even within the file system's resolution
-        now = time.time()
-        os.utime(path, (now, now + 1))
+        if keep_mtime:
+            # The unchanged text with its unchanged mtime: older than the
+            # objects of the unchanged build that Builder.reset puts back
+            os.utime(path, ns=(mtime, mtime))
+        else:
+            # A new mtime even within the file system's resolution
+            now = time.time()
+            os.utime(path, (now, now + 1))
 
 
 def tests_of(fault, platform):
@@ -379,6 +442,7 @@ def main():
     targets = sorted({t for f in faults for t in f.get("targets", [])})
     if not builder.make(targets):
         fail("build of the unchanged copy failed (see %s)" % log)
+    builder.snapshot()
 
     if args.baseline:
         # One run of the union (ctest's regular expressions allow only a few
@@ -395,9 +459,11 @@ def main():
         print("baseline: %d tests pass (%.0f s)" % (ran, time.time() - start),
               flush=True)
 
-    command = "tests/mutation/mutate.py --level %s%s%s" % (
+    command = "tests/mutation/mutate.py --level %s%s%s%s%s" % (
         args.level, " --platform " + args.platform
         if args.level == "openfoam" else "",
+        " --baseline" if args.baseline else "",
+        " --only " + args.only if args.only else "",
         "".join(" --overlay " + o for o in args.overlay))
     rows = []
     for fault in faults:
@@ -411,6 +477,7 @@ def main():
             if not builder.make(fault.get("targets", [])):
                 row["status"] = "build failed"
             else:
+                row["build"] = time.time() - t0
                 ran, failed, _ = ctest(builder.build, regex, log, builder.env,
                                        args.jobs, args.timeout)
                 row["ran"] = ran
@@ -418,7 +485,7 @@ def main():
                 if ran == 0:
                     row["status"] = "no test ran"
         finally:
-            restore(originals)
+            restore(originals, keep_mtime=builder.reset())
         row["time"] = time.time() - t0
         rows.append(row)
         if args.report:
@@ -426,8 +493,8 @@ def main():
             write_report(args.report, args.level, args.platform, commit,
                          rows, time.time() - start, command, overlays,
                          len(faults))
-        print("%-34s %-12s %4.0f s  killed by: %s" % (
-            fault["name"], row["status"], row["time"],
+        print("%-34s %-12s %4.0f s (build %.0f s)  killed by: %s" % (
+            fault["name"], row["status"], row["time"], row.get("build", 0),
             ", ".join(row["killed"]) or "NOTHING"), flush=True)
 
     total = time.time() - start
