@@ -46,7 +46,7 @@ import re
 
 import numpy as np
 
-import foamTestCase as t
+from foamcase import testing as t
 import foamcase as fc
 from testStatisticsFile import GROUPS, RHO_P, make_case
 
