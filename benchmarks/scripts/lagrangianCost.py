@@ -3,12 +3,18 @@
 field-based Lagrangian: the closed box of the LagrangianRoughVelocity tests
 (src/python/foamcase/lagrangianCase.py; 2000 particles under gravity, all six
 walls with the condition, 400 steps of 1 ms), run alternately with each
-condition, the CPU time of foamRun (its last ExecutionTime) per run.
+condition, the CPU time of foamRun (its last ExecutionTime) per run; the
+ratio per round (rough/rebound of the same round), its median and range.
+With --callgrind-steps N1 N2 also valgrind's instruction counts of foamRun
+with each condition at N1 and N2 steps (a smaller box of the same kind,
+--callgrind-particles): the difference divided by N2 - N1 is the cost of a
+time step without the start-up, noise-free.
 
 Usage (in the platform's environment, PYTHONPATH with src/python and
 tests/openfoam, as ctest sets it):
     lagrangianCost.py --platform openfoam14 --runs 3 --work DIR \
-        --out benchmarks/results/lagrangian-cost.openfoam14.md
+        --out benchmarks/results/lagrangian-cost.openfoam14.md \
+        [--callgrind-steps 50 100] [--callgrind-particles 2000]
 
 SPDX-License-Identifier: GPL-3.0-or-later
 """
@@ -32,9 +38,8 @@ CONDITIONS = {
 }
 
 
-def groups():
+def groups(n=2000):
     rng = np.random.default_rng(4)
-    n = 2000
     pos = 0.005 + 0.09*rng.random((n, 3))
     out = []
     for k in range(20):
@@ -51,7 +56,35 @@ def main():
     p.add_argument("--runs", type=int, default=3)
     p.add_argument("--work", required=True)
     p.add_argument("--out", required=True)
+    p.add_argument("--callgrind-steps", type=int, nargs=2)
+    p.add_argument("--callgrind-particles", type=int, default=2000)
     args = p.parse_args()
+    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"],
+                            capture_output=True, text=True,
+                            cwd=os.path.dirname(__file__)).stdout.strip()
+    instr = {}
+    if args.callgrind_steps:
+        for steps in args.callgrind_steps:
+            for name, cond in CONDITIONS.items():
+                path = os.path.join(os.path.abspath(args.work),
+                                    "callgrind-steps%d" % steps, name)
+                lc.make_case(path, groups(args.callgrind_particles), cond,
+                             box=((0, 0, 0), (0.1, 0.1, 0.1)),
+                             cells=(10, 10, 10), end_time=steps*1e-3,
+                             delta_t=1e-3, gravity=True)
+                fc.run(path, ["blockMesh"], "log.blockMesh")
+                out = os.path.join(path, "callgrind.out")
+                fc.run(path, ["valgrind", "--tool=callgrind",
+                              "--callgrind-out-file=" + out, "foamRun"],
+                       "log.callgrind", timeout=3600)
+                total = None
+                for line in open(out):
+                    if line.startswith("summary:") \
+                            or line.startswith("totals:"):
+                        total = int(line.split()[1])
+                instr[(steps, name)] = total
+                print(steps, name, total, flush=True)
+                os.remove(out)
     cases = {}
     for name, cond in CONDITIONS.items():
         cases[name] = lc.make_case(
@@ -71,9 +104,8 @@ def main():
             loads.append(os.getloadavg()[0])
     med = {k: statistics.median(v) for k, v in times.items()}
     ratio = med["roughVelocity"]/med["reboundVelocity"]
-    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"],
-                            capture_output=True, text=True,
-                            cwd=os.path.dirname(__file__)).stdout.strip()
+    paired = [a/b for a, b in zip(times["roughVelocity"],
+                                  times["reboundVelocity"])]
     lines = [
         "# roughVelocity against reboundVelocity (%s)" % args.platform, "",
         "Closed box, 2000 particles, gravity, six walls with the condition, "
@@ -88,8 +120,31 @@ def main():
             name, ", ".join("%.2f" % x for x in times[name]), med[name]))
     lines += ["", "Ratio of the medians, roughVelocity / reboundVelocity: "
               "%.3f" % ratio, "",
-              "Command: `benchmarks/scripts/lagrangianCost.py --platform %s "
-              "--runs %d`" % (args.platform, args.runs), ""]
+              "Ratio per round (same round): median %.3f, range %.3f-%.3f"
+              % (statistics.median(paired), min(paired), max(paired)), ""]
+    if instr:
+        s0, s1 = args.callgrind_steps
+        per = {name: (instr[(s1, name)] - instr[(s0, name)])/(s1 - s0)
+               for name in CONDITIONS}
+        lines += [
+            "Instructions (callgrind of foamRun, %d particles, the same box"
+            "): per time step = (whole run at %d steps - at %d steps)/%d, "
+            "the start-up removed." % (args.callgrind_particles, s1, s0,
+                                       s1 - s0), "",
+            "| condition | whole run, %d steps | whole run, %d steps | "
+            "per step [10^6] |" % (s0, s1), "|---|---|---|---|"]
+        for name in CONDITIONS:
+            lines.append("| %s | %d | %d | %.3f |" % (
+                name, instr[(s0, name)], instr[(s1, name)], per[name]/1e6))
+        lines += ["", "Per step, roughVelocity / reboundVelocity: %.4f"
+                  % (per["roughVelocity"]/per["reboundVelocity"]), ""]
+    lines += ["Command: `benchmarks/scripts/lagrangianCost.py --platform %s "
+              "--runs %d%s`" % (args.platform, args.runs,
+                                " --callgrind-steps %d %d "
+                                "--callgrind-particles %d"
+                                % (tuple(args.callgrind_steps)
+                                   + (args.callgrind_particles,))
+                                if instr else ""), ""]
     fc.write_text(args.out, "\n".join(lines))
     print("\n".join(lines))
 
