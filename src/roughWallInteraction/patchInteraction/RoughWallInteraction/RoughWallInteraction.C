@@ -30,8 +30,7 @@ License
 #include "RoughWallInteraction.H"
 #include "roughWallInput.H"
 #include "foamCompat.H"
-#include "coreVectors.H"
-#include "cloudUniform01.H"
+#include "coreBridge.H"
 #include "restitutionCoefficients.hpp"
 
 #include <cmath>
