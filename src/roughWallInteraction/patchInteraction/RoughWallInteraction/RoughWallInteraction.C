@@ -484,7 +484,17 @@ void Foam::RoughWallInteraction<CloudType>::info(ROUGHWALL_INFO_PARAMETERS)
         const label nSums = stored.sums().size();
 
         this->getModelProperty("counts", stored.counts());
-        this->getModelProperty("sums", stored.sums());
+        stringList exact;
+        this->getModelProperty("exactSums", exact);
+        if (exact.empty())
+        {
+            // Restart files written before the sums were kept exact
+            this->getModelProperty("sums", stored.sums());
+        }
+        else if (!stored.setExactSums(exact))
+        {
+            stored.sums().clear();
+        }
 
         if
         (
@@ -515,7 +525,7 @@ void Foam::RoughWallInteraction<CloudType>::info(ROUGHWALL_INFO_PARAMETERS)
     if (this->writeTime())
     {
         this->setModelProperty("counts", total.counts());
-        this->setModelProperty("sums", total.sums());
+        this->setModelProperty("exactSums", total.exactSums());
         stats_.reset();
     }
 }
