@@ -32,7 +32,7 @@ License
 #include "LagrangianMesh.H"
 #include "LagrangianFields.H"
 #include "roughWallInput.H"
-#include "coreVectors.H"
+#include "coreBridge.H"
 #include "roughWallCollision.hpp"
 
 #include <cmath>

@@ -30,8 +30,7 @@ License
 #include "RoughWallInteraction.H"
 #include "roughWallInput.H"
 #include "foamCompat.H"
-#include "coreVectors.H"
-#include "cloudUniform01.H"
+#include "coreBridge.H"
 #include "restitutionCoefficients.hpp"
 
 #include <cmath>
@@ -485,7 +484,17 @@ void Foam::RoughWallInteraction<CloudType>::info(ROUGHWALL_INFO_PARAMETERS)
         const label nSums = stored.sums().size();
 
         this->getModelProperty("counts", stored.counts());
-        this->getModelProperty("sums", stored.sums());
+        stringList exact;
+        this->getModelProperty("exactSums", exact);
+        if (exact.empty())
+        {
+            // Restart files written before the sums were kept exact
+            this->getModelProperty("sums", stored.sums());
+        }
+        else if (!stored.setExactSums(exact))
+        {
+            stored.sums().clear();
+        }
 
         if
         (
@@ -516,7 +525,7 @@ void Foam::RoughWallInteraction<CloudType>::info(ROUGHWALL_INFO_PARAMETERS)
     if (this->writeTime())
     {
         this->setModelProperty("counts", total.counts());
-        this->setModelProperty("sums", total.sums());
+        this->setModelProperty("exactSums", total.exactSums());
         stats_.reset();
     }
 }

@@ -35,6 +35,9 @@ License
 #include "OSspecific.H"
 #include "roughWallLimits.hpp"
 
+#include <cstdio>
+#include <cstdlib>
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::roughWallStatistics::roughWallStatistics
@@ -245,6 +248,42 @@ Foam::roughWallStatistics::report
             return {};
         }
     }
+}
+
+
+Foam::stringList Foam::roughWallStatistics::exactSums() const
+{
+    // 17 significant digits: the shortest that gives back every double
+    stringList text(sums_.size());
+    char buffer[32];
+    forAll(sums_, i)
+    {
+        std::snprintf(buffer, sizeof(buffer), "%.17g", sums_[i]);
+        text[i] = buffer;
+    }
+    return text;
+}
+
+
+bool Foam::roughWallStatistics::setExactSums(const stringList& text)
+{
+    if (text.size() != sums_.size())
+    {
+        return false;
+    }
+
+    scalarList values(text.size());
+    forAll(text, i)
+    {
+        char* end = nullptr;
+        values[i] = std::strtod(text[i].c_str(), &end);
+        if (end == text[i].c_str() || *end != '\0')
+        {
+            return false;
+        }
+    }
+    sums_ = values;
+    return true;
 }
 
 

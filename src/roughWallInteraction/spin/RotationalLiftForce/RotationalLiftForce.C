@@ -30,7 +30,7 @@ License
 #include "RotationalLiftForce.H"
 #include "spinModelInput.H"
 #include "foamCompat.H"
-#include "coreVectors.H"
+#include "coreBridge.H"
 #include "fvcCurl.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
