@@ -10,6 +10,7 @@
 //   rollingSphereEnvelope.hpp    Delta(d) and the tilt's shape from a wall profile
 //   profileFile.hpp              reading a measured profile trace
 //   envelopeAngleTable.hpp       Delta(d) of a profile tabulated for look-ups per hit
+//   roughnessAngle.hpp           Delta(d) in the four forms a patch gives it
 //   spinLiftAndTorque.hpp        rotational lift and fluid torque of a sphere
 // (and, below collideWithRoughWall: facetAngleSampler, facetCollision,
 // CollisionAngleDistribution, gaussianMass, standardNormal, fastMath)
@@ -23,4 +24,5 @@
 #include "rollingSphereEnvelope.hpp"
 #include "profileFile.hpp"
 #include "envelopeAngleTable.hpp"
+#include "roughnessAngle.hpp"
 #include "spinLiftAndTorque.hpp"

@@ -1,0 +1,208 @@
+// roughWallCore: framework-free physics of Derevich's rough-wall collision model.
+// Copyright (C) 2026 roughWallInteraction authors. SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Delta(d_p), the roughness angle that a particle of diameter d_p sees, in the
+// four forms a patch can give it (docs/roughWallInteraction.md, "Three ways to
+// give a rough wall"):
+//   constant     roughnessAngle 8;
+//   table        roughnessAngle ((110e-6 8) (460e-6 5)); linear in d_p between
+//                the rows, held at the end rows beyond them (the paper's
+//                comparison uses a smaller Delta for larger beads: they bridge
+//                the small asperities)
+//   closedForm   roughness { Ra ...; RSm ...; estimate closedForm; }:
+//                equation (1), profileRoughness.hpp
+//   envelope     roughness { profile "<file>"; } or the profile parameters:
+//                the rolling-sphere envelope, tabulated (envelopeAngleTable.hpp)
+// One object per patch, asked once per wall hit. The checks of a table's rows
+// are here as well: the adapter only reads the numbers and words the message.
+#pragma once
+
+#include "envelopeAngleTable.hpp"
+#include "profileRoughness.hpp"
+#include "rollingSphereEnvelope.hpp"
+#include "roughWallLimits.hpp"
+
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace roughWall
+{
+
+class RoughnessAngle
+{
+public:
+
+    //- How Delta(d_p) was given
+    enum class Form { constant, table, closedForm, envelope };
+
+    //- A table row: diameter d [m], Delta [deg] (as the user writes it)
+    using Row = std::pair<double, double>;
+
+private:
+
+    Form form_ = Form::constant;
+
+    //- constant: one row; table: the rows, d strictly increasing [m, rad]
+    std::vector<double> d_{0}, angle_{0};
+
+    //- closedForm: equation (1)
+    RoughnessCorrelation correlation_;
+
+    //- envelope: the tabulated envelope and what it is the envelope of
+    EnvelopeAngleTable envelope_;
+    std::string source_;
+
+    //- table: linear in d between the rows, the end rows beyond them
+    double tableAngle(const double d) const
+    {
+        const std::size_t n = d_.size();
+        if (!(d > d_.front())) return angle_.front();
+        if (d >= d_.back()) return angle_.back();
+
+        // Bisection for d_[lo] <= d < d_[hi], hi = lo + 1
+        std::size_t lo = 0, hi = n - 1;
+        while (hi - lo > 1)
+        {
+            const std::size_t mid = (lo + hi)/2;
+            (d_[mid] <= d ? lo : hi) = mid;
+        }
+        const double f = (d - d_[lo])/(d_[hi] - d_[lo]);
+        return angle_[lo] + f*(angle_[hi] - angle_[lo]);
+    }
+
+public:
+
+    //- Delta = 0: a smooth wall
+    RoughnessAngle() = default;
+
+    //- The index of the first row of a table that is not allowed (d >= 0
+    //  strictly increasing, Delta in [0, maxRoughnessAngleDeg]; NaN fails),
+    //  or -1 if every row is
+    static long firstBadRow(const std::vector<Row>& rows)
+    {
+        for (std::size_t i = 0; i < rows.size(); ++i)
+        {
+            const double d = rows[i].first, deg = rows[i].second;
+            if
+            (
+                !(d >= 0 && deg >= 0 && deg <= limits::maxRoughnessAngleDeg)
+             || (i > 0 && !(d > rows[i - 1].first))
+            )
+            {
+                return long(i);
+            }
+        }
+        return -1;
+    }
+
+    //- From rows that firstBadRow accepts (at least one); one row is the
+    //  constant Delta of that row
+    static RoughnessAngle table(const std::vector<Row>& rows)
+    {
+        RoughnessAngle r;
+        r.form_ = rows.size() > 1 ? Form::table : Form::constant;
+        r.d_.clear();
+        r.angle_.clear();
+        for (const Row& row : rows)
+        {
+            r.d_.push_back(row.first);
+            r.angle_.push_back(limits::degToRad(row.second));
+        }
+        return r;
+    }
+
+    //- Equation (1) of the profile parameters
+    static RoughnessAngle closedForm(const ProfileRoughness& p)
+    {
+        RoughnessAngle r;
+        r.form_ = Form::closedForm;
+        r.correlation_ = RoughnessCorrelation(p);
+        r.angle_ = {r.correlation_.angleUncached(0)};
+        return r;
+    }
+
+    //- The envelope table of the profile that source describes
+    static RoughnessAngle envelope(EnvelopeAngleTable t, std::string source)
+    {
+        RoughnessAngle r;
+        r.form_ = Form::envelope;
+        r.envelope_ = std::move(t);
+        r.source_ = std::move(source);
+        return r;
+    }
+
+    Form form() const { return form_; }
+
+    //- Delta [rad] for a particle of diameter d [m]
+    double operator()(const double d) const
+    {
+        switch (form_)
+        {
+            case Form::constant: return angle_.front();
+            case Form::table: return tableAngle(d);
+            case Form::closedForm: return correlation_.angle(d);
+            case Form::envelope: return envelope_.angle(d);
+        }
+        return 0;
+    }
+
+    //- Is d inside the diameters Delta is known for? (false only outside
+    //  an envelope's tabulated range, where Delta is held at its end value)
+    bool covers(const double d) const
+    {
+        return form_ != Form::envelope || envelope_.covers(d);
+    }
+
+    const EnvelopeAngleTable& envelopeTable() const { return envelope_; }
+
+    //- envelope: what the table is the envelope of
+    const std::string& source() const { return source_; }
+
+    //- Delta as text, for the log's summary of a patch
+    std::string describe() const
+    {
+        std::ostringstream os;
+        const auto deg = [](const double rad) { return limits::radToDeg(rad); };
+        switch (form_)
+        {
+            case Form::constant:
+                os << deg(angle_.front()) << " deg";
+                break;
+            case Form::table:
+                os  << "table of " << d_.size() << " rows, "
+                    << deg(angle_.front()) << " deg at d = " << d_.front()
+                    << " m to " << deg(angle_.back()) << " deg at d = "
+                    << d_.back() << " m";
+                break;
+            case Form::closedForm:
+                os  << "atan(2 pi Rq/max(RSm, d)) with Rq = "
+                    << correlation_.rmsHeight() << " m, RSm = "
+                    << correlation_.regimeChangeDiameter() << " m: "
+                    << deg(angle_.front()) << " deg for d <= RSm";
+                break;
+            case Form::envelope:
+                os  << "envelope of the " << source_ << ": "
+                    << deg(envelope_.interpolate(envelope_.dMin()))
+                    << " deg at d = " << envelope_.dMin() << " m to "
+                    << deg(envelope_.interpolate(envelope_.dMax()))
+                    << " deg at d = " << envelope_.dMax() << " m";
+                break;
+        }
+        return os.str();
+    }
+};
+
+//- The synthetic Gaussian profile of a wall given by its parameters (0: not
+//  given): Rq, else Rq of a Gaussian profile of that Ra (exact), else of that
+//  Rz measured over sampling lengths of 5 RSm (rollingSphereEnvelope.hpp)
+inline SyntheticProfileSettings gaussianProfileOf(const ProfileRoughness& p)
+{
+    SyntheticProfileSettings s;
+    s.Rq = p.Rq > 0 ? p.Rq : p.Ra > 0 ? rqPerRaGaussian*p.Ra : p.Rz/rzPerRqGaussian;
+    s.RSm = p.RSm;
+    return s;
+}
+
+} // End namespace roughWall
