@@ -452,6 +452,23 @@ def test_bad_input(args, work):
             "the 120 um particles (smooth rolling rebound, deviation %.1e)"
             % err)
 
+    # eArgument is a keyword of type rough, so of this condition too: e a
+    # Function1 of the normal impact speed, 0.8 at every speed of the hits
+    # (0.5 to 0.87 m/s), on a smooth wall: the 60 deg group rolls as above
+    # (oracle: the same closed form)
+    case = lc.make_case(os.path.join(work, "eArgument"), groups, ESCAPE,
+                        lowerWall="type roughVelocity; mu0 0.4; "
+                                  "e table ((0 0.8) (10 0.8)); "
+                                  "eArgument normalSpeed; roughnessAngle 0;")
+    run(case)
+    U = particles(case, "0.05")["U"]
+    d = diameters(case, "0.05", len(U))
+    g = np.abs(d - ANGLES[60]) < 1e-9
+    err = np.abs(U[g] - expected).max()
+    t.check(np.count_nonzero(g) == 20 and err < 1e-12,
+            "e as a Function1 of eArgument normalSpeed: accepted, and the "
+            "smooth rolling rebound with e = 0.8 (deviation %.1e)" % err)
+
 
 def main():
     args = parse_args()

@@ -114,15 +114,15 @@ Foam::roughVelocityLagrangianPatchVectorField::coeffsDict
 
     // The keywords of this condition (type rough's and d), checked here so
     // that the message names this condition's, not the parcel model's
-    roughWallInput::checkKeywords
+    wordList used
     (
-        coeffs,
-        {
-            "e", "mu0", "muD", "roughnessAngle", "roughness", "lateralTilt",
-            "maxFacetCollisions", "d"
-        },
-        string("type ") + typeName
+        roughWallPatchSettings::keywords
+        (
+            roughWallPatchSettings::interactionType::rough
+        )
     );
+    used.append("d");
+    roughWallInput::checkKeywords(coeffs, used, string("type ") + typeName);
 
     return coeffs;
 }
@@ -346,16 +346,7 @@ void Foam::roughVelocityLagrangianPatchVectorField::evaluate
         roughWall::Vec3 spin(roughWall::Vec3::Zero());
         hitUniform01 uniform01(hitSeed(subi + subMesh.start()));
 
-        roughWall::collideWithRoughWall<false>
-        (
-            v,
-            spin,
-            n,
-            0.5*d[subi],
-            rough_.parameters(d[subi]),
-            uniform01,
-            emptyDirection
-        );
+        rough_.collide<false>(v, spin, n, d[subi], uniform01, emptyDirection);
 
         if (!std::isfinite(v.squaredNorm()))
         {

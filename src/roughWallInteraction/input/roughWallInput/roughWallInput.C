@@ -254,6 +254,36 @@ Foam::label Foam::roughWallInput::readLabelOrDefault
 }
 
 
+Foam::label Foam::roughWallInput::readChoice
+(
+    const dictionary& dict,
+    const word& keyword,
+    const wordList& choices,
+    const char* meaning,
+    const label deflt
+)
+{
+    if (deflt >= 0 && !roughWallCompat::findLiteral(dict, keyword))
+    {
+        return deflt;
+    }
+
+    string allowed = "one of " + Foam::name(choices.size()) + " words:";
+    for (const word& w : choices)
+    {
+        allowed += " " + w;
+    }
+
+    const word found = read<word>(dict, keyword, allowed, meaning);
+    const label i = std::find(choices.begin(), choices.end(), found) - choices.begin();
+    if (i == choices.size())
+    {
+        fatalBadEntry(dict, keyword, allowed, meaning, "'" + found + "'");
+    }
+    return i;
+}
+
+
 bool Foam::roughWallInput::readSwitchOrDefault
 (
     const dictionary& dict,

@@ -144,39 +144,8 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
     auto& rndGen = this->owner().rndGen();
     cloudUniform01<std::remove_reference_t<decltype(rndGen)>> uniform01(rndGen);
 
-    // Constant e, mu0, muD: the core's constant policy (the code of before
-    // issue 31); functions of the facet impact: asked per facet collision
-    const auto collide = [&](const auto& parameters)
-    {
-        return roughWall::collideWithRoughWall<withSpin>
-        (
-            v,
-            omega,
-            n,
-            0.5*p.d(),
-            parameters,
-            uniform01,
-            emptyDirection
-        );
-    };
-    const roughWall::RoughWallParameters constant(settings.parameters(p.d()));
-    roughWall::RoughWallReport report;
-    if (const facetImpactCoefficients* impact = settings.impact())
-    {
-        const roughWall::RoughWallParametersOf<facetImpactCoefficients::policy>
-            ofImpact
-            {
-                facetImpactCoefficients::policy(*impact),
-                constant.roughnessAngle,
-                constant.lateralTilt,
-                constant.maxFacetCollisions
-            };
-        report = collide(ofImpact);
-    }
-    else
-    {
-        report = collide(constant);
-    }
+    const roughWall::RoughWallReport report =
+        settings.collide<withSpin>(v, omega, n, p.d(), uniform01, emptyDirection);
 
     const scalar v1Sqr = v.squaredNorm();
     const scalar omega1Sqr = omega.squaredNorm();

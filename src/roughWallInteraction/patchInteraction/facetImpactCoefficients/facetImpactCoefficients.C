@@ -5,6 +5,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "facetImpactCoefficients.H"
+#include "roughWallInput.H"
 #include "foamCompat.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -61,23 +62,24 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
 
     if (dict.found("eArgument"))
     {
-        const word a(dict.lookup("eArgument"));
-        if (a == "normalSpeed")
-        {
-            eArgument_ = roughWall::ImpactArgument::normalSpeed;
-        }
-        else if (a != "angle")
-        {
-            FatalIOErrorInFunction(dict)
-                << "eArgument " << a << " in " << dict.name()
-                << ": allowed are angle, normalSpeed" << exit(FatalIOError);
-        }
+        eArgument_ = roughWall::ImpactArgument
+        (
+            roughWallInput::readChoice
+            (
+                dict, "eArgument", {"angle", "normalSpeed"},
+                "what e is a function of: angle (facet impact angle [deg]) "
+                "or normalSpeed (normal impact speed [m/s])"
+            )
+        );
         if (!e_.valid())
         {
-            FatalIOErrorInFunction(dict)
-                << "eArgument in " << dict.name()
-                << " needs e as a Function1 (e is the constant "
-                << constants_.e << ")" << exit(FatalIOError);
+            roughWallInput::fatalBadEntry
+            (
+                dict, "eArgument", "only with e as a Function1",
+                "what e is a function of: angle (facet impact angle [deg]) "
+                "or normalSpeed (normal impact speed [m/s])",
+                "e is the constant " + Foam::name(constants_.e)
+            );
         }
     }
 

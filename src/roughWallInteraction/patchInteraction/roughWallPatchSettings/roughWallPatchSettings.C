@@ -117,7 +117,7 @@ Foam::roughWallPatchSettings::types[5] =
         {
             "roughnessAngle",
             [](settings& s, const dictionary& d) { s.readRoughness(d); },
-            ROUGHWALL_WRITE(s.roughnessDescription().c_str())
+            ROUGHWALL_WRITE(s.roughness_.describe().c_str())
         },
         {"roughness", nullptr, nullptr},    // read with roughnessAngle
         {
@@ -289,14 +289,11 @@ void Foam::roughWallPatchSettings::readAngle(const dictionary& dict)
 
     // A constant, or a table (d Delta) read by OpenFOAM's List<Tuple2>
     List<Tuple2<scalar, scalar>> table;
-    if (e.stream().size() && e.stream()[0].isNumber())
+    const bool constant = e.stream().size() && e.stream()[0].isNumber();
+    if (constant)
     {
         scalar angle = 0;
-        if
-        (
-            !roughWallCompat::readAll(e.stream(), angle)
-         || !(angle >= 0 && angle <= maxDeg)
-        )
+        if (!roughWallCompat::readAll(e.stream(), angle))
         {
             fatal(found);
         }
@@ -307,33 +304,22 @@ void Foam::roughWallPatchSettings::readAngle(const dictionary& dict)
         fatal(found);
     }
 
-    diameters_.setSize(table.size());
-    angles_.setSize(table.size());
-
-    forAll(table, rowi)
+    std::vector<roughWall::RoughnessAngle::Row> rows;
+    for (const Tuple2<scalar, scalar>& row : table)
     {
-        const scalar d = table[rowi].first();
-        const scalar angle = table[rowi].second();
-
-        if
+        rows.emplace_back(row.first(), row.second());
+    }
+    const long bad = roughWall::RoughnessAngle::firstBadRow(rows);
+    if (bad >= 0)
+    {
+        fatal
         (
-            !(d >= 0 && angle >= 0 && angle <= maxDeg)
-         || (rowi > 0 && !(d > diameters_[rowi - 1]))
-        )
-        {
-            fatal(found + " (row " + Foam::name(rowi + 1) + ")");
-        }
-
-        diameters_[rowi] = d;
-        angles_[rowi] = roughWall::limits::degToRad(angle);
+            constant
+          ? found
+          : string(found + " (row " + Foam::name(label(bad + 1)) + ")")
+        );
     }
-
-    // A constant, or a one-row table, is Delta for every diameter
-    rough_.roughnessAngle = angles_[0];
-    if (table.size() == 1)
-    {
-        diameters_.clear();
-    }
+    roughness_ = roughWall::RoughnessAngle::table(rows);
 }
 
 
@@ -412,15 +398,19 @@ void Foam::roughWallPatchSettings::readProfile(const dictionary& dict)
                 rDict, "profile", allowed, traceMeaning, string(err.what())
             );
         }
-        envelopeSource_ =
+        tabulate
+        (
+            rDict, "profile", trace,
             "profile " + path + " (" + Foam::name(label(trace.x.size()))
-          + " points, levelled)";
-        tabulate(rDict, "profile", trace, 0, 0);
+          + " points, levelled)",
+            0, 0
+        );
         return;
     }
 
+    roughWall::ProfileRoughness parameters;
     double* values[] =
-        {&profile_.Ra, &profile_.Rq, &profile_.Rz, &profile_.RSm};
+        {&parameters.Ra, &parameters.Rq, &parameters.Rz, &parameters.RSm};
     bool given[4];
     for (label i = 0; i < 4; ++i)
     {
@@ -440,7 +430,7 @@ void Foam::roughWallPatchSettings::readProfile(const dictionary& dict)
     const roughWall::ProfileRoughnessError error =
         roughWall::checkProfileRoughness
         (
-            profile_, given[0], given[1], given[2]
+            parameters, given[0], given[1], given[2]
         );
 
     if (!error.keyword.empty())
@@ -458,54 +448,35 @@ void Foam::roughWallPatchSettings::readProfile(const dictionary& dict)
     // How Delta(d) follows from the parameters: the envelope of the
     // synthetic Gaussian profile (default), or the closed-form estimate
     // (docs/roughWallInteraction.md: its figure shows where they differ)
-    word estimate("envelope");
-    if (roughWallCompat::findLiteral(rDict, "estimate"))
-    {
-        const string allowed = "one of 2 words: envelope closedForm";
-        const char* const meaning =
-            "how Delta(d_p) follows from the parameters: the rolling-sphere "
-            "envelope of a synthetic Gaussian profile (envelope, default) "
-            "or atan(2 pi Rq / max(RSm, d_p)) (closedForm)";
-        estimate = roughWallInput::read<word>(rDict, "estimate", allowed, meaning);
-        if (estimate != "envelope" && estimate != "closedForm")
-        {
-            roughWallInput::fatalBadEntry
-            (
-                rDict, "estimate", allowed, meaning, "'" + estimate + "'"
-            );
-        }
-    }
+    const bool closedForm = roughWallInput::readChoice
+    (
+        rDict, "estimate", {"envelope", "closedForm"},
+        "how Delta(d_p) follows from the parameters: the rolling-sphere "
+        "envelope of a synthetic Gaussian profile (envelope, default) "
+        "or atan(2 pi Rq / max(RSm, d_p)) (closedForm)",
+        0
+    ) == 1;
 
-    if (estimate == "closedForm")
+    if (closedForm)
     {
-        fromProfile_ = true;
-        correlation_ = roughWall::RoughnessCorrelation(profile_);
-        rough_.roughnessAngle = correlation_.angleUncached(0);
+        roughness_ = roughWall::RoughnessAngle::closedForm(parameters);
         return;
     }
 
-    // Rq of a Gaussian profile: exactly from Ra; from Rz over sampling
-    // lengths of 5 RSm (rollingSphereEnvelope.hpp)
-    roughWall::SyntheticProfileSettings synthetic;
-    synthetic.Rq =
-        given[1] ? profile_.Rq
-      : given[0] ? roughWall::rqPerRaGaussian*profile_.Ra
-      : profile_.Rz/roughWall::rzPerRqGaussian;
-    synthetic.RSm = profile_.RSm;
-
+    const roughWall::SyntheticProfileSettings synthetic =
+        roughWall::gaussianProfileOf(parameters);
     const roughWall::SampledProfile profile =
         roughWall::syntheticGaussianProfile(synthetic);
-    envelopeSource_ =
-        "synthetic Gaussian profile, Rq = " + Foam::name(synthetic.Rq)
-      + " m, RSm = " + Foam::name(synthetic.RSm) + " m ("
-      + Foam::name(label(profile.x.size())) + " points, seed "
-      + Foam::name(label(synthetic.seed)) + ")";
 
     // Below RSm/10 Delta is at its small-sphere limit (to 3e-4 deg); above
     // 100 RSm it has fallen to a tenth of it
     tabulate
     (
         rDict, given[1] ? "Rq" : given[0] ? "Ra" : "Rz", profile,
+        "synthetic Gaussian profile, Rq = " + Foam::name(synthetic.Rq)
+      + " m, RSm = " + Foam::name(synthetic.RSm) + " m ("
+      + Foam::name(label(profile.x.size())) + " points, seed "
+      + Foam::name(label(synthetic.seed)) + ")",
         synthetic.RSm/10, 100*synthetic.RSm
     );
 }
@@ -516,14 +487,16 @@ void Foam::roughWallPatchSettings::tabulate
     const dictionary& rDict,
     const word& keyword,
     const roughWall::SampledProfile& profile,
+    const string& source,
     const scalar dMin,
     const scalar dMax
 )
 {
     const std::clock_t start = std::clock();
+    roughWall::EnvelopeAngleTable envelope;
     try
     {
-        envelope_ = roughWall::EnvelopeAngleTable(profile, dMin, dMax);
+        envelope = roughWall::EnvelopeAngleTable(profile, dMin, dMax);
     }
     catch (const std::exception& err)
     {
@@ -531,13 +504,14 @@ void Foam::roughWallPatchSettings::tabulate
         (
             rDict, keyword,
             "a profile longer than twice its largest point spacing",
-            profileMeaning, envelopeSource_ + ": " + err.what()
+            profileMeaning, source + ": " + err.what()
         );
     }
     const scalar seconds = scalar(std::clock() - start)/CLOCKS_PER_SEC;
 
     const scalar maxDeg = roughWall::limits::maxRoughnessAngleDeg;
-    if (roughWall::limits::radToDeg(envelope_.maxAngle()) > maxDeg)
+    const scalar maxFound = roughWall::limits::radToDeg(envelope.maxAngle());
+    if (maxFound > maxDeg)
     {
         roughWallInput::fatalBadEntry
         (
@@ -545,19 +519,17 @@ void Foam::roughWallPatchSettings::tabulate
             "a profile whose Delta(d_p) is at most " + Foam::name(maxDeg)
           + " deg (the model's limit)",
             profileMeaning,
-            envelopeSource_ + ": Delta up to "
-          + Foam::name(roughWall::limits::radToDeg(envelope_.maxAngle()))
-          + " deg"
+            source + ": Delta up to " + Foam::name(maxFound) + " deg"
         );
     }
 
-    rough_.roughnessAngle = envelope_.interpolate(envelope_.dMin());
-
     Info<< "    " << rDict.name().c_str() << ": Delta(d_p) of the rolling-sphere "
-        << "envelope of the " << envelopeSource_.c_str() << " tabulated at "
-        << label(envelope_.rows()) << " diameters from " << envelope_.dMin()
-        << " to " << envelope_.dMax() << " m in " << seconds << " s CPU"
+        << "envelope of the " << source.c_str() << " tabulated at "
+        << label(envelope.rows()) << " diameters from " << envelope.dMin()
+        << " to " << envelope.dMax() << " m in " << seconds << " s CPU"
         << endl;
+
+    roughness_ = roughWall::RoughnessAngle::envelope(envelope, source);
 }
 
 
@@ -566,81 +538,15 @@ void Foam::roughWallPatchSettings::warnOutside(const scalar d) const
     if (!warnedRange_)
     {
         warnedRange_ = true;
+        const roughWall::EnvelopeAngleTable& envelope = roughness_.envelopeTable();
         WarningInFunction
             << "Patch " << patchName_ << ": a parcel of diameter " << d
-            << " m hit the wall, outside the diameters " << envelope_.dMin()
-            << " to " << envelope_.dMax() << " m for which Delta(d_p) of the "
-            << envelopeSource_.c_str() << " is tabulated;" << nl
+            << " m hit the wall, outside the diameters " << envelope.dMin()
+            << " to " << envelope.dMax() << " m for which Delta(d_p) of the "
+            << roughness_.source().c_str() << " is tabulated;" << nl
             << "    Delta is held at its value at the nearer end (this "
             << "warning is given once per patch entry)" << endl;
     }
-}
-
-
-Foam::scalar Foam::roughWallPatchSettings::tableAngle(const scalar d) const
-{
-    const label n = diameters_.size();
-
-    if (!(d > diameters_[0]))
-    {
-        return angles_[0];
-    }
-    if (d >= diameters_[n - 1])
-    {
-        return angles_[n - 1];
-    }
-
-    // Bisection for diameters_[lo] <= d < diameters_[lo + 1]
-    label lo = 0;
-    label hi = n - 1;
-    while (hi - lo > 1)
-    {
-        const label mid = (lo + hi)/2;
-        if (diameters_[mid] <= d)
-        {
-            lo = mid;
-        }
-        else
-        {
-            hi = mid;
-        }
-    }
-
-    const scalar f = (d - diameters_[lo])/(diameters_[hi] - diameters_[lo]);
-    return angles_[lo] + f*(angles_[hi] - angles_[lo]);
-}
-
-
-Foam::string Foam::roughWallPatchSettings::roughnessDescription() const
-{
-    OStringStream os;
-    if (envelope_.rows())
-    {
-        os  << "envelope of the " << envelopeSource_.c_str() << ": "
-            << roughWall::limits::radToDeg(envelope_.interpolate(envelope_.dMin()))
-            << " deg at d = " << envelope_.dMin() << " m to "
-            << roughWall::limits::radToDeg(envelope_.interpolate(envelope_.dMax()))
-            << " deg at d = " << envelope_.dMax() << " m";
-    }
-    else if (fromProfile_)
-    {
-        os  << "atan(2 pi Rq/max(RSm, d)) with Rq = "
-            << correlation_.rmsHeight() << " m, RSm = " << profile_.RSm
-            << " m: " << roughWall::limits::radToDeg(rough_.roughnessAngle)
-            << " deg for d <= RSm";
-    }
-    else if (diameters_.empty())
-    {
-        os  << roughWall::limits::radToDeg(rough_.roughnessAngle) << " deg";
-    }
-    else
-    {
-        os  << "table of " << diameters_.size() << " rows, "
-            << roughWall::limits::radToDeg(angles_[0]) << " deg at d = " << diameters_[0]
-            << " m to " << roughWall::limits::radToDeg(angles_.last()) << " deg at d = "
-            << diameters_.last() << " m";
-    }
-    return os.str();
 }
 
 
@@ -653,13 +559,8 @@ Foam::roughWallPatchSettings::roughWallPatchSettings()
     e_(1),
     mu_(0),
     rough_(),
-    diameters_(),
-    angles_(),
-    fromProfile_(false),
-    profile_(),
-    correlation_(),
-    envelope_(),
-    envelopeSource_(),
+    roughness_(),
+    impact_(),
     warnedRange_(false)
 {}
 
@@ -674,37 +575,27 @@ Foam::roughWallPatchSettings::roughWallPatchSettings
 {
     patchName_ = patchName;
 
-    // The type: OpenFOAM's word reader, then the table of types
-    string typeNames;
+    wordList typeNames;
     for (const typeEntry& t : types)
     {
-        typeNames += string(" ") + t.name;
+        typeNames.append(t.name);
     }
-    const string allowed = "one of 5 words:" + typeNames;
-    const char* const meaning = "what happens to a parcel that hits the patch";
-
-    const word typeWord = roughWallInput::read<word>(dict, "type", allowed, meaning);
-    label typei = 0;
-    while (typei < 5 && typeWord != types[typei].name)
-    {
-        ++typei;
-    }
-    if (typei == 5)
-    {
-        roughWallInput::fatalBadEntry(dict, "type", allowed, meaning, "'" + typeWord + "'");
-    }
+    const label typei = roughWallInput::readChoice
+    (
+        dict, "type", typeNames, "what happens to a parcel that hits the patch"
+    );
     type_ = interactionType(typei);
 
     // Read every keyword of the type, then stop at any other keyword
-    wordList used{"type"};
     for (const keyword& k : types[typei].keywords)
     {
         if (k.read)
         {
             k.read(*this, dict);
         }
-        used.append(k.name);
     }
+    wordList used{"type"};
+    used.append(keywords(type_));
 
     roughWallInput::checkKeywords(dict, used, string("type ") + typeName());
 }
@@ -885,6 +776,20 @@ Foam::roughWallPatchSettings::readPatches
     }
 
     return result;
+}
+
+
+Foam::wordList Foam::roughWallPatchSettings::keywords
+(
+    const interactionType type
+)
+{
+    wordList names;
+    for (const keyword& k : types[label(type)].keywords)
+    {
+        names.append(k.name);
+    }
+    return names;
 }
 
 
