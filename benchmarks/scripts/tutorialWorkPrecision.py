@@ -38,50 +38,9 @@ about 20 min of solver CPU time with the 3 s spin-up.
 import argparse
 import math
 import os
-import shutil
-import subprocess
 
 from foamcase import bench as bc
 import foamcase as fc
-
-TUTORIAL = os.path.join(bc.ROOT, "tutorials", "incompressibleFluid",
-                        "horizontalChannel")
-OPENFOAM_ENV = os.path.join(bc.ROOT, "etc", "openfoamEnv")
-
-
-def prepare(work):
-    """A clean copy of the tutorial (no runs, no results)"""
-    tut = os.path.join(work, "horizontalChannel")
-    if os.path.isdir(tut):
-        shutil.rmtree(tut)
-    os.makedirs(tut)
-    for name in ("Allrun", "Allclean", "scripts", "carrier", "particles"):
-        src = os.path.join(TUTORIAL, name)
-        if os.path.isdir(src):
-            shutil.copytree(src, os.path.join(tut, name),
-                            ignore=shutil.ignore_patterns(
-                                "log.*", "[1-9]*", "polyMesh", "__pycache__"))
-        else:
-            shutil.copy(src, tut)
-    return tut
-
-
-def run_config(tut, platform, name, variant, parcels, spin_up, sampling, dt):
-    """One run of the tutorial's Allrun; returns its summary row and
-    profile rows"""
-    out = os.path.join(tut, "results", name)
-    env = dict(os.environ, ROUGHWALL_ROOT=bc.ROOT)
-    cmd = [OPENFOAM_ENV, platform, os.path.join(tut, "Allrun"),
-           "-variants", variant, "-parcels", str(parcels),
-           "-spinup", repr(spin_up), "-sample", repr(sampling),
-           "-dt", repr(dt), "-results", out, "-jobs", "1"]
-    with open(os.path.join(tut, "log.%s" % name), "w") as f:
-        subprocess.run(cmd, cwd=tut, stdout=f, stderr=subprocess.STDOUT,
-                       env=env, check=True)
-    summary = fc.read_csv(os.path.join(out, "summary.csv"))[0]
-    profile = fc.read_csv(os.path.join(out, "profiles.csv"))
-    return summary, profile
-
 
 def configurations(quick):
     if quick:
@@ -106,13 +65,13 @@ def configurations(quick):
 def measure(args):
     work = os.path.abspath(args.work)
     os.makedirs(work, exist_ok=True)
-    tut = prepare(work)
+    tut = bc.prepare_tutorial(work)
     rows = []
     for (parcels, spin_up, sampling, dt), sweeps in sorted(
             configurations(args.quick).items(), key=lambda kv: kv[0][0]
             * (kv[0][1] + kv[0][2])/kv[0][3]):
         name = "n%d-t%g-dt%g" % (parcels, sampling, dt)
-        s, prof = run_config(tut, args.platform, name, args.variant, parcels, spin_up,
+        s, prof = bc.run_tutorial(tut, args.platform, name, args.variant, parcels, spin_up,
                              sampling, dt)
         se = [float(p["concentration_se"]) for p in prof
               if p["concentration_se"]]

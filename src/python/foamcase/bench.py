@@ -7,7 +7,10 @@ import json
 import os
 import platform
 import re
+import shutil
 import subprocess
+
+from .tables import read_csv
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
 RESULTS = os.path.join(ROOT, "benchmarks", "results")
@@ -142,3 +145,43 @@ def parse_name(name):
             k, v = p.split(":", 1)
             fields[k] = v
     return fields
+
+
+#: The main tutorial, copied by prepare_tutorial and run by run_tutorial
+TUTORIAL = os.path.join(ROOT, "tutorials", "incompressibleFluid",
+                        "horizontalChannel")
+OPENFOAM_ENV = os.path.join(ROOT, "etc", "openfoamEnv")
+
+
+def prepare_tutorial(work):
+    """A clean copy of the tutorial (no runs, no results)"""
+    tut = os.path.join(work, "horizontalChannel")
+    if os.path.isdir(tut):
+        shutil.rmtree(tut)
+    os.makedirs(tut)
+    for name in ("Allrun", "Allclean", "scripts", "carrier", "particles"):
+        src = os.path.join(TUTORIAL, name)
+        if os.path.isdir(src):
+            shutil.copytree(src, os.path.join(tut, name),
+                            ignore=shutil.ignore_patterns(
+                                "log.*", "[1-9]*", "polyMesh", "__pycache__"))
+        else:
+            shutil.copy(src, tut)
+    return tut
+
+
+def run_tutorial(tut, platform, name, variant, parcels, spin_up, sampling, dt):
+    """One run of the tutorial's Allrun; returns its summary row and
+    profile rows"""
+    out = os.path.join(tut, "results", name)
+    env = dict(os.environ, ROUGHWALL_ROOT=ROOT)
+    cmd = [OPENFOAM_ENV, platform, os.path.join(tut, "Allrun"),
+           "-variants", variant, "-parcels", str(parcels),
+           "-spinup", repr(spin_up), "-sample", repr(sampling),
+           "-dt", repr(dt), "-results", out, "-jobs", "1"]
+    with open(os.path.join(tut, "log.%s" % name), "w") as f:
+        subprocess.run(cmd, cwd=tut, stdout=f, stderr=subprocess.STDOUT,
+                       env=env, check=True)
+    summary = read_csv(os.path.join(out, "summary.csv"))[0]
+    profile = read_csv(os.path.join(out, "profiles.csv"))
+    return summary, profile

@@ -273,14 +273,13 @@ def profile(runner, args):
 
 def tutorial_measure(args):
     """Rounds of the TUTORIAL_VARIANTS, each run by the tutorial's Allrun
-    (tutorialWorkPrecision.run_config: one variant, -jobs 1, serial: the
+    (foamcase.bench.run_tutorial: one variant, -jobs 1, serial: the
     tutorial has no parallel option), the order reversed every other round;
     returns the rows"""
-    import tutorialWorkPrecision as tw
     bc.write_machine(tutorial_stem(args.tag))
     work = os.path.abspath(os.path.join(args.work, "tutorial"))
     os.makedirs(work, exist_ok=True)
-    tut = tw.prepare(work)
+    tut = bc.prepare_tutorial(work)
     # The tutorial's own 3 s spin-up: the beads are spread over the channel
     # as in its results, not still falling or dispersing
     parcels, spin_up, sampling = (500, 0.2, 0.2) if args.quick \
@@ -303,7 +302,7 @@ def tutorial_measure(args):
             name = "cost-%s-%d" % (variant, rnd)
             config, dirs = variants[variant]
             with library_path(dirs):
-                summary, _ = tw.run_config(tut, args.platform, name, config,
+                summary, _ = bc.run_tutorial(tut, args.platform, name, config,
                                            parcels, spin_up, sampling, 1e-3)
             row = dict(platform=args.platform, round=rnd, variant=variant,
                        parcels=parcels,
