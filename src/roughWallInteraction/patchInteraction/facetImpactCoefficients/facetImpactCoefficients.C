@@ -33,6 +33,13 @@ Foam::autoPtr<Foam::Function1<Foam::scalar>> readCoefficient
 } // End anonymous namespace
 
 
+// * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * * //
+
+const char* const Foam::facetImpactCoefficients::eArgumentMeaning =
+    "what e is a function of: angle (facet impact angle [deg]) "
+    "or normalSpeed (normal impact speed [m/s])";
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::facetImpactCoefficients::facetImpactCoefficients
@@ -67,8 +74,7 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
             roughWallInput::readChoice
             (
                 dict, "eArgument", {"angle", "normalSpeed"},
-                "what e is a function of: angle (facet impact angle [deg]) "
-                "or normalSpeed (normal impact speed [m/s])"
+                eArgumentMeaning
             )
         );
         if (!e_.valid())
@@ -76,8 +82,7 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
             roughWallInput::fatalBadEntry
             (
                 dict, "eArgument", "only with e as a Function1",
-                "what e is a function of: angle (facet impact angle [deg]) "
-                "or normalSpeed (normal impact speed [m/s])",
+                eArgumentMeaning,
                 "e is the constant " + Foam::name(constants_.e)
             );
         }

@@ -219,8 +219,7 @@ void Foam::roughWallPatchSettings::readCoefficients(const dictionary& dict)
             roughWallInput::fatalBadEntry
             (
                 dict, "eArgument", "only with e as a Function1",
-                "what e is a function of: angle (facet impact angle [deg]) "
-                "or normalSpeed (normal impact speed [m/s])",
+                facetImpactCoefficients::eArgumentMeaning,
                 "e is a constant"
             );
         }
