@@ -6,12 +6,14 @@
 
 The tutorial (tutorials/incompressibleFluid/horizontalChannel, OpenFOAM-14
 or -13 (--platform), foamRun) is copied to a work directory and run by its own Allrun, one wall
-model (default rough2.5, 195 um beads), one variant at a time
-(-jobs 1), varying one thing at a time:
-  parcels   N = 1000 .. 16000, spin-up 3 s, sampling 2 s, dt = 1 ms
-  sampling  N = 4000, sampling 0.5 .. 4 s after a 3 s spin-up, dt = 1 ms
-  dt        N = 4000, 3 s + 2 s, dt = 2, 1, 0.5, 0.25 ms
-The spin-up is the tutorial's default, 3 s: its README shows the two halves
+model (default rough5, the tutorial's default variant: 195 um beads,
+Delta = 5 deg), one variant at a time (-jobs 1), varying one thing at a
+time from the tutorial's own set-up (2000 parcels, 1 s spin-up, 1.5 s
+sampled, dt = 1 ms):
+  parcels   N = 500 .. 16000, spin-up 1 s, sampling 1.5 s, dt = 1 ms
+  sampling  N = 2000, sampling 0.75 .. 6 s after the 1 s spin-up, dt = 1 ms
+  dt        N = 2000, 1 s + 1.5 s, dt = 2, 1, 0.5, 0.25 ms
+The spin-up is the tutorial's default, 1 s: its README shows the two halves
 of the sampling window after it agree (a shorter one would measure the
 approach to the steady state, not the error of the steady statistics).
 The carrier flow is computed by the first run and reused by the others
@@ -33,7 +35,7 @@ recorded). Every OpenFOAM command runs in the environment of --platform
 (etc/openfoamEnv, default openfoam14), whatever the calling shell has sourced.
 Writes benchmarks/results/tutorial-work-precision.csv, tutorial.md and
 docs/figures/bench-tutorial-work-precision.png. Run time at the defaults:
-about 20 min of solver CPU time with the 3 s spin-up.
+about 30 min of solver CPU time.
 """
 import argparse
 import math
@@ -48,9 +50,9 @@ def configurations(quick):
         sweeps = dict(parcels=[250, 500, 1000], sampling=[0.15, 0.3, 0.6],
                       dt=[2e-3, 1e-3, 5e-4])
     else:
-        base = dict(parcels=4000, spin_up=3.0, sampling=2.0, dt=1e-3)
-        sweeps = dict(parcels=[1000, 2000, 4000, 8000, 16000],
-                      sampling=[0.5, 1.0, 2.0, 4.0],
+        base = dict(parcels=2000, spin_up=1.0, sampling=1.5, dt=1e-3)
+        sweeps = dict(parcels=[500, 1000, 2000, 4000, 8000, 16000],
+                      sampling=[0.75, 1.5, 3.0, 6.0],
                       dt=[2e-3, 1e-3, 5e-4, 2.5e-4])
     configs = {}
     for sweep, values in sweeps.items():
@@ -75,7 +77,7 @@ def measure(args):
                              sampling, dt)
         se = [float(p["concentration_se"]) for p in prof
               if p["concentration_se"]]
-        row = dict(platform=args.platform,
+        row = dict(platform=args.platform, variant=args.variant,
                    sweeps=" ".join(sorted(sweeps)), parcels=parcels,
                    spin_up=spin_up, sampling=sampling, dt=dt,
                    wall=s["wallClock"], cpu=s["cpuTime"],
@@ -217,13 +219,15 @@ def figure(a):
 def table(rows):
     platforms = sorted({r.get("platform", "openfoam13") for r in rows})
     spin_ups = sorted({str(r["spin_up"]) for r in rows})
-    lines = ["horizontalChannel, variant rough2.5 unless stated, on %s, spin-up "
+    variants = sorted({r.get("variant", "rough2.5") for r in rows})
+    lines = ["horizontalChannel, variant %s, on %s, spin-up "
              "%s s, one variant at a time "
              "(`PYTHONPATH=src/python /usr/bin/python3 "
              "benchmarks/scripts/tutorialWorkPrecision.py --platform %s`, or "
              "`benchmarks/run tutorial`). CPU: the solver's last ExecutionTime; "
              "+- one standard error (jackknife over groups of whole parcels)."
-             % (", ".join(platforms), ", ".join(spin_ups), platforms[0]), "",
+             % (", ".join(variants), ", ".join(platforms), ", ".join(spin_ups),
+                platforms[0]), "",
              "| sweep | parcels | sampling [s] | dt [ms] | CPU [s] | wall [s] | "
              "upper-half fraction | rms wall-normal velocity [m/s] | RMS s.e. "
              "concentration | lower-wall impacts per parcel per m | mean k_n |",
@@ -250,7 +254,7 @@ def main():
                                                   "benchmarks", "tutorial"))
     p.add_argument("--platform", default="openfoam14",
                    choices=("openfoam14", "openfoam13"))
-    p.add_argument("--variant", default="rough2.5",
+    p.add_argument("--variant", default="rough5",
                    help="file of the tutorial's particles/constant/variants")
     p.add_argument("--quick", action="store_true")
     p.add_argument("--plot-only", action="store_true")
