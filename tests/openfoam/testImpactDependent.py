@@ -24,6 +24,10 @@ With --badInput: bad functions stop the run (non-zero exit, no crash):
   - e table reaching 1.2: FOAM FATAL IO ERROR at start-up naming the patch
     entry, "e = 1.2 at angle = 90 deg" and the range [0, 1];
   - eArgument with a constant e: FOAM FATAL IO ERROR naming eArgument;
+  - beside a function e, the constants are checked as on a patch of
+    constants: mu0 '0.4 0.5' (two numbers; before 2026-11-27 the first was
+    taken) and muD 0.5 above mu0 0.4, each a FOAM FATAL IO ERROR naming the
+    keyword, the text found and its range;
   - muD a polynomial 0.1 + 0.01 beta with mu0 0.4 (above mu0 beyond 30 deg,
     not checkable at start-up): FOAM FATAL ERROR at the first such facet
     collision naming the patch, "muD = ", "at angle = " and "[0, mu0]".
@@ -105,6 +109,13 @@ def bad_input(platform, args):
             "e               %s;" % table,
             "e               0.8;\n            eArgument normalSpeed;"),
          ["FOAM FATAL IO ERROR", "eArgument", "e as a Function1"]),
+        ("mu0 two numbers beside a function e", SETTINGS.replace(
+            "mu0             0.4;", "mu0             0.4 0.5;"),
+         ["FOAM FATAL IO ERROR", "'mu0'", "'0.4 0.5'",
+          "a number in [0, inf]"]),
+        ("muD constant above mu0 beside a function e", SETTINGS.replace(
+            foam_table(MUD_TABLE), "0.5"),
+         ["FOAM FATAL IO ERROR", "'muD'", "'0.5'", "a number in [0, 0.4]"]),
         ("muD polynomial above mu0", SETTINGS.replace(
             foam_table(MUD_TABLE), polynomial),
          ["FOAM FATAL ERROR", "lowerWall|upperWall", "muD = ",

@@ -13,18 +13,20 @@
 namespace
 {
 
-//- A number, or a Function1 (null with the number in value)
+//- A number in r, checked as every constant of the settings is, or a
+//- Function1 (null, with the number in value)
 Foam::autoPtr<Foam::Function1<Foam::scalar>> readCoefficient
 (
     const Foam::dictionary& dict,
     const Foam::word& keyword,
+    const Foam::roughWallInput::range& r,
     Foam::scalar& value
 )
 {
     using namespace Foam;
     if (!Foam::facetImpactCoefficients::isFunction(dict, keyword))
     {
-        value = dict.lookup(keyword)[0].number();
+        value = roughWallInput::readScalar(dict, keyword, r);
         return autoPtr<Function1<scalar>>();
     }
     return roughWallCompat::newScalarFunction1(keyword, dict);
@@ -50,13 +52,35 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
 :
     patchName_(patchName),
     eArgument_(roughWall::ImpactArgument::angle),
+    dependsOnImpact_(false),
     checkPerCall_(false)
 {
-    e_ = readCoefficient(dict, "e", constants_.e);
-    mu0_ = readCoefficient(dict, "mu0", constants_.mu0);
-    if (dict.found("muD"))
+    e_ = readCoefficient
+    (
+        dict, "e",
+        {0, 1, "normal restitution coefficient of a facet collision"},
+        constants_.e
+    );
+    mu0_ = readCoefficient
+    (
+        dict, "mu0",
+        {0, GREAT, "static friction coefficient (no-slip criterion)"},
+        constants_.mu0
+    );
+    // Sliding friction above the static one could reverse the slip (a
+    // function mu0 is compared with muD at the nodes below)
+    if (roughWallCompat::findLiteral(dict, "muD"))
     {
-        muD_ = readCoefficient(dict, "muD", constants_.muD);
+        muD_ = readCoefficient
+        (
+            dict, "muD",
+            {
+                0, mu0_.valid() ? GREAT : constants_.mu0,
+                "dynamic (sliding) friction coefficient; must not exceed "
+                "mu0 (default: mu0)"
+            },
+            constants_.muD
+        );
     }
     else if (mu0_.valid())
     {
@@ -66,17 +90,10 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
     {
         constants_.muD = constants_.mu0;
     }
+    dependsOnImpact_ = e_.valid() || mu0_.valid() || muD_.valid();
 
-    if (dict.found("eArgument"))
+    if (roughWallCompat::findLiteral(dict, "eArgument"))
     {
-        eArgument_ = roughWall::ImpactArgument
-        (
-            roughWallInput::readChoice
-            (
-                dict, "eArgument", {"angle", "normalSpeed"},
-                eArgumentMeaning
-            )
-        );
         if (!e_.valid())
         {
             roughWallInput::fatalBadEntry
@@ -86,6 +103,18 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
                 "e is the constant " + Foam::name(constants_.e)
             );
         }
+        eArgument_ = roughWall::ImpactArgument
+        (
+            roughWallInput::readChoice
+            (
+                dict, "eArgument", {"angle", "normalSpeed"},
+                eArgumentMeaning
+            )
+        );
+    }
+    if (!dependsOnImpact_)
+    {
+        return;
     }
 
     // Tables: the bounds at their nodes (linear in between, constant
@@ -162,14 +191,6 @@ bool Foam::facetImpactCoefficients::isFunction
     // as a number and refused with the constant's message and range
     const ITstream& is = dict.lookup(keyword);
     return is.size() > 1 && is[0].isWord();
-}
-
-
-bool Foam::facetImpactCoefficients::anyFunction(const dictionary& dict)
-{
-    return
-        isFunction(dict, "e") || isFunction(dict, "mu0")
-     || isFunction(dict, "muD");
 }
 
 

@@ -108,11 +108,19 @@ Foam::roughWallPatchSettings::types[5] =
         {
             // e, mu0, muD: numbers, or Function1s of the facet impact
             "e",
-            [](settings& s, const dictionary& d) { s.readCoefficients(d); },
-            ROUGHWALL_WRITE(s.coefficientDescription("e").c_str())
+            [](settings& s, const dictionary& d)
+            {
+                s.coefficients_ = std::make_shared<const facetImpactCoefficients>
+                (
+                    d, word(s.patchName_)
+                );
+                s.rough_.material = s.coefficients_->constants();
+                s.impactDependent_ = s.coefficients_->dependsOnImpact();
+            },
+            ROUGHWALL_WRITE(s.coefficients_->description("e").c_str())
         },
-        {"mu0", nullptr, ROUGHWALL_WRITE(s.coefficientDescription("mu0").c_str())},
-        {"muD", nullptr, ROUGHWALL_WRITE(s.coefficientDescription("muD").c_str())},
+        {"mu0", nullptr, ROUGHWALL_WRITE(s.coefficients_->description("mu0").c_str())},
+        {"muD", nullptr, ROUGHWALL_WRITE(s.coefficients_->description("muD").c_str())},
         {"eArgument", nullptr, nullptr},     // read with e
         {
             "roughnessAngle",
@@ -207,61 +215,6 @@ void Foam::roughWallPatchSettings::readRoughness(const dictionary& dict)
     {
         readProfile(dict);
     }
-}
-
-
-void Foam::roughWallPatchSettings::readCoefficients(const dictionary& dict)
-{
-    if (!facetImpactCoefficients::anyFunction(dict))
-    {
-        if (dict.found("eArgument"))
-        {
-            roughWallInput::fatalBadEntry
-            (
-                dict, "eArgument", "only with e as a Function1",
-                facetImpactCoefficients::eArgumentMeaning,
-                "e is a constant"
-            );
-        }
-        rough_.material.e = roughWallInput::readScalar(dict, "e",
-            {0, 1, "normal restitution coefficient of a facet collision"});
-        rough_.material.mu0 = roughWallInput::readScalar(dict, "mu0",
-            {0, GREAT, "static friction coefficient (no-slip criterion)"});
-        // Sliding friction above the static one could reverse the slip
-        rough_.material.muD = roughWallInput::readScalarOrDefault
-        (
-            dict, "muD",
-            {
-                0, rough_.material.mu0,
-                "dynamic (sliding) friction coefficient; must not exceed "
-                "mu0 (default: mu0)"
-            },
-            rough_.material.mu0
-        );
-        return;
-    }
-    impact_ = std::make_shared<const facetImpactCoefficients>
-    (
-        dict,
-        word(patchName_)
-    );
-    rough_.material = impact_->constants();
-}
-
-
-Foam::string Foam::roughWallPatchSettings::coefficientDescription
-(
-    const word& name
-) const
-{
-    if (impact_)
-    {
-        return impact_->description(name);
-    }
-    OStringStream os;
-    os  << (name == "e" ? rough_.material.e
-          : name == "mu0" ? rough_.material.mu0 : rough_.material.muD);
-    return os.str();
 }
 
 
@@ -559,7 +512,8 @@ Foam::roughWallPatchSettings::roughWallPatchSettings()
     mu_(0),
     rough_(),
     roughness_(),
-    impact_(),
+    coefficients_(),
+    impactDependent_(false),
     warnedRange_(false)
 {}
 
