@@ -12,6 +12,13 @@ testBadInput.py (FOAM FATAL IO ERROR, the settings file, the patches entry,
 the keyword; no crash).  The expected line numbers are those of the files
 written here.
 
+Last, a diameter outside the tabulated range: a trace of 101 points 1 um
+apart (written here) is tabulated from its largest spacing to half its
+length, 1 to 50 um (the rule, stated in docs/roughWallInteraction.md), and
+every parcel (100-120 um) is larger and only lowerWall is hit: the run goes
+on (rc 0, every parcel still in the domain: none is lost) and warns once,
+naming the patch entry and that range (parsed from the log, within 0.1 %).
+
 Usage: testRoughnessProfileBadInput.py --platform openfoam13|openfoam1912
            [--cloud KIND] [--work DIR]
 
@@ -19,6 +26,7 @@ SPDX-License-Identifier: GPL-3.0-or-later
 """
 
 import os
+import re
 
 from foamcase import testing as t
 import foamcase as fc
@@ -101,6 +109,32 @@ def test():
                 % (where, rc, case.file("constant/wallProfile")))
 
     b.check_bad_cases(case, platform, CASES)
+    diameter_outside_the_table(case)
+
+
+def diameter_outside_the_table(case):
+    with open(case.file("constant/shortTrace"), "w") as f:
+        f.write(points(101))
+    case.write_settings(profile("shortTrace"))
+    case.set_control(endTime="0.05")
+    rc, _ = case.solve("log.outsideRange", check_rc=False)
+    text = case.log("log.outsideRange")
+    warned = re.findall(r"Patch entry (\S+): a parcel of diameter \S+ m hit the "
+                        r"wall, outside the diameters (\S+) to (\S+) m",
+                        text)
+    t.check(rc == 0 and len(warned) == 1,
+            "a diameter above the table: the run goes on (rc %d) and warns "
+            "once (%d warnings)" % (rc, len(warned)))
+    if warned:
+        patch, d_min, d_max = warned[0][0], float(warned[0][1]), \
+            float(warned[0][2])
+        t.check(patch.strip('"') == "(lowerWall|upperWall)"
+                and abs(d_min/1e-6 - 1) < 1e-3
+                and abs(d_max/50e-6 - 1) < 1e-3,
+                "the warning names the entry and 1 to 50 um (%s, %g to %g)"
+                % (patch, d_min, d_max))
+    n = len(case.read_cloud("0.05", ["d"])["d"])
+    t.check(n == 3*10, "every parcel is still in the domain (%d of 30)" % n)
 
 
 if __name__ == "__main__":

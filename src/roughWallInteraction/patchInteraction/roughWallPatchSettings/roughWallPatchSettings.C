@@ -492,12 +492,13 @@ void Foam::roughWallPatchSettings::warnOutside(const scalar d) const
         warnedRange_ = true;
         const roughWall::EnvelopeAngleTable& envelope = roughness_.envelopeTable();
         WarningInFunction
-            << "Patch " << patchName_ << ": a parcel of diameter " << d
+            << "Patch entry " << patchName_ << ": a parcel of diameter " << d
             << " m hit the wall, outside the diameters " << envelope.dMin()
             << " to " << envelope.dMax() << " m for which Delta(d_p) of the "
             << roughness_.source().c_str() << " is tabulated;" << nl
             << "    Delta is held at its value at the nearer end (this "
-            << "warning is given once per patch entry)" << endl;
+            << "warning is given once for each mesh patch the entry covers, "
+            << "on each processor)" << endl;
     }
 }
 
