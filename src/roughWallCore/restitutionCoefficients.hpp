@@ -78,11 +78,16 @@ inline RestitutionCoefficients restitutionCoefficients
 //  magnitude counts as normal incidence: its direction is round-off
 constexpr double normalIncidenceTangentialFraction = 1e-15;
 
-//- k_n and k_t of a wall hit without spin, and whether k_t is defined
+//- k_n and k_t of a wall hit without spin, whether k_t is defined, and the
+//  velocities they are ratios of (the statistics' impulse-weighted sums)
 struct WallHitCoefficients
 {
     RestitutionCoefficients k;   //!< kOmega is 0
     bool hasKt = false;          //!< false at normal incidence (k.kt 0)
+    double vnIn = 0;             //!< |V'.N|, the incident normal speed
+    double vnOut = 0;            //!< V''.N, signed
+    double vtIn = 0;             //!< |V'_t| (0 without k_t)
+    double vtOut = 0;            //!< V''.t, t = V'_t/|V'_t| (0 without k_t)
 };
 
 //- k_n and k_t (2.5) of a wall hit from the incident (v1) and rebound (v2)
@@ -104,10 +109,11 @@ inline WallHitCoefficients wallHitCoefficients
     hit.hasKt = vt1Sqr > f*f*v1.squaredNorm();
     const double vx1 = hit.hasKt ? std::sqrt(vt1Sqr) : 0;
     const Vec3 t = hit.hasKt ? Vec3(vt1/vx1) : Vec3::Zero();
-    hit.k = restitutionCoefficients
-    (
-        vx1, vy1, v2.dot(t), v2.dot(wallNormal), 0
-    );
+    hit.vnIn = std::abs(vy1);
+    hit.vnOut = v2.dot(wallNormal);
+    hit.vtIn = vx1;
+    hit.vtOut = v2.dot(t);
+    hit.k = restitutionCoefficients(vx1, vy1, hit.vtOut, hit.vnOut, 0);
     return hit;
 }
 

@@ -286,6 +286,7 @@ TEST(WallHitCoefficients, HandDerivedValues)
         Vec3 N, v1, v2;
         bool hasKt;
         double kn, kt;
+        double vnIn, vnOut, vtIn, vtOut;   // |V'.N|, V''.N, |V'_t|, V''.t
         const char* what;
     };
     const Vec3 y(0, 1, 0), z(0, 0, 1);
@@ -298,25 +299,34 @@ TEST(WallHitCoefficients, HandDerivedValues)
     {
         // v1 = (3, -4, 0): |V'_t| = 3, V'.N = -4; V'' = (1.5, 2, 0.5):
         // k_n = 2/4, k_t = 1.5/3 (the out-of-plane 0.5 does not count)
-        {y, {3, -4, 0}, {1.5, 2, 0.5}, true, 0.5, 0.5, "x-y plane"},
+        {y, {3, -4, 0}, {1.5, 2, 0.5}, true, 0.5, 0.5, 4, 2, 3, 1.5,
+         "x-y plane"},
         // N = z, V' = (3, 4, -5): t = (0.6, 0.8, 0), |V'_t| = 5;
         // V'' = (4, 3, 1): V''.t = 4.8, k_t = 0.96, k_n = 1/5
-        {z, {3, 4, -5}, {4, 3, 1}, true, 0.2, 0.96, "tangent (0.6, 0.8)"},
+        {z, {3, 4, -5}, {4, 3, 1}, true, 0.2, 0.96, 5, 1, 5, 4.8,
+         "tangent (0.6, 0.8)"},
         // backward rebound: k_t = -1/2
-        {y, {2, -1, 0}, {-1, 0.5, 0}, true, 0.5, -0.5, "backward"},
+        {y, {2, -1, 0}, {-1, 0.5, 0}, true, 0.5, -0.5, 1, 0.5, 2, -1,
+         "backward"},
         // all of the rebound's tangential velocity sideways: k_t = 0
         // (|V''_t|/|V'_t| would be 3)
-        {y, {1, -1, 0}, {0, 1, 3}, true, 1, 0, "sideways rebound"},
+        {y, {1, -1, 0}, {0, 1, 3}, true, 1, 0, 1, 1, 1, 0,
+         "sideways rebound"},
         // oblique wall: V' = -3 N + 2 t, V'' = 1.5 N - t + 0.7 (N x t)
-        {No, -3*No + 2*to, 1.5*No - to + 0.7*lo, true, 0.5, -0.5, "oblique wall"},
+        {No, -3*No + 2*to, 1.5*No - to + 0.7*lo, true, 0.5, -0.5,
+         3, 1.5, 2, -1, "oblique wall"},
         // a rebound still moving into the wall: k_n signed, negative
-        {y, {1, -2, 0}, {0.5, -0.4, 0}, true, -0.2, 0.5, "still wallward"},
+        {y, {1, -2, 0}, {0.5, -0.4, 0}, true, -0.2, 0.5, 2, -0.4, 1, 0.5,
+         "still wallward"},
         // normal incidence: no tangent, no k_t (left 0)
-        {y, {0, -2, 0}, {0.3, 1.6, 0.4}, false, 0.8, 0, "normal incidence"},
+        {y, {0, -2, 0}, {0.3, 1.6, 0.4}, false, 0.8, 0, 2, 1.6, 0, 0,
+         "normal incidence"},
         // a tangential part of 1e-16 of |V'| is round-off: normal incidence
-        {y, {1e-16, -1, 0}, {0.1, 0.5, 0}, false, 0.5, 0, "1e-16 tangential"},
+        {y, {1e-16, -1, 0}, {0.1, 0.5, 0}, false, 0.5, 0, 1, 0.5, 0, 0,
+         "1e-16 tangential"},
         // 1e-14 of |V'| is a direction: k_t = 2e-15/1e-14
-        {y, {1e-14, -1, 0}, {2e-15, 0.5, 0}, true, 0.5, 0.2, "1e-14 tangential"},
+        {y, {1e-14, -1, 0}, {2e-15, 0.5, 0}, true, 0.5, 0.2,
+         1, 0.5, 1e-14, 2e-15, "1e-14 tangential"},
     };
     for (const Case& c : cases)
     {
@@ -325,5 +335,11 @@ TEST(WallHitCoefficients, HandDerivedValues)
         EXPECT_NEAR(k.k.kn, c.kn, 1e-14) << c.what;
         EXPECT_NEAR(k.k.kt, c.kt, 1e-14) << c.what;
         EXPECT_EQ(k.k.kOmega, 0) << c.what;
+        // The statistics' impulse-weighted sums add these
+        EXPECT_NEAR(k.vnIn, c.vnIn, 1e-14) << c.what;
+        EXPECT_NEAR(k.vnOut, c.vnOut, 1e-14) << c.what;
+        EXPECT_NEAR(k.vtIn, c.vtIn, 1e-14*c.vtIn + 1e-30) << c.what;
+        EXPECT_NEAR(k.vtOut, c.vtOut, 1e-14*std::abs(c.vtOut) + 1e-30)
+            << c.what;
     }
 }

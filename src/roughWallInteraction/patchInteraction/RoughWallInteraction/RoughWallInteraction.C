@@ -171,10 +171,8 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
     }
 
     // Statistics, relative to the wall: k_n, and k_t along the incident
-    // tangential velocity (none at normal incidence)
-    const roughWall::WallHitCoefficients k =
-        roughWall::wallHitCoefficients(v0, v, n);
-
+    // tangential velocity (none at normal incidence), with the velocities
+    // of the impulse-weighted ratios
     const scalar energyLoss =
         p.nParticle()
        *(
@@ -182,16 +180,10 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
           + rotationalEnergyLoss
         );
 
-    // The impulse-weighted ratios: the velocities along n and along the
-    // incident tangential direction
-    const roughWall::Vec3 vt0 = v0 - v0.dot(n)*n;
-    const scalar vtIn = k.hasKt ? vt0.norm() : 0;
-
     stats_.addHit
     (
-        pp.index(), report, k.k.kn, k.hasKt, k.k.kt, energyLoss,
-        mag(v0.dot(n)), v.dot(n),
-        vtIn, k.hasKt ? v.dot(vt0)/vtIn : 0
+        pp.index(), report, roughWall::wallHitCoefficients(v0, v, n),
+        energyLoss
     );
 }
 
