@@ -437,10 +437,31 @@ def test_bad_input(args, work):
     # d in the condition replaces the cloud's field: with the table
     # ((100e-6 0) (300e-6 0)) -> Delta 0 and a d of 200 um the 60 deg group
     # rolls as in the smooth test, whatever the cloud's d
-    case = lc.make_case(os.path.join(work, "dGiven"), groups, ESCAPE,
-                        lowerWall="type roughVelocity; e 0.8; mu0 0.4; "
-                                  "roughnessAngle ((100e-6 20) (150e-6 20) "
-                                  "(200e-6 0) (300e-6 0)); d 200e-6;")
+    check_smooth_rolling(
+        work, groups, "dGiven",
+        "type roughVelocity; e 0.8; mu0 0.4; roughnessAngle ((100e-6 20) "
+        "(150e-6 20) (200e-6 0) (300e-6 0)); d 200e-6;",
+        "d 200e-6 in the condition: the table's Delta(200 um) = 0 for the "
+        "120 um particles (smooth rolling rebound")
+
+    # eArgument is a keyword of type rough, so of this condition too: e a
+    # Function1 of the normal impact speed, 0.8 at every speed of the hits
+    # (0.5 to 0.87 m/s), on a smooth wall: the 60 deg group rolls as above
+    # (oracle: the same closed form)
+    check_smooth_rolling(
+        work, groups, "eArgument",
+        "type roughVelocity; mu0 0.4; e table ((0 0.8) (10 0.8)); "
+        "eArgument normalSpeed; roughnessAngle 0;",
+        "e as a Function1 of eArgument normalSpeed: accepted, and the smooth "
+        "rolling rebound with e = 0.8 (")
+
+
+def check_smooth_rolling(work, groups, name, lowerWall, what):
+    """The 60 deg group on a wall that is smooth for it, e = 0.8, mu0 0.4:
+    the rolling rebound's closed form, u_t (1 - 2/7) and 0.8 u_n, to 1e-12
+    (the 20 particles of the group)"""
+    case = lc.make_case(os.path.join(work, name), groups, ESCAPE,
+                        lowerWall=lowerWall)
     run(case)
     U = particles(case, "0.05")["U"]
     d = diameters(case, "0.05", len(U))
@@ -448,26 +469,7 @@ def test_bad_input(args, work):
     expected = np.array([(1 - 2/7)*0.5, 0.8*math.sin(math.radians(60)), 0])
     err = np.abs(U[g] - expected).max()
     t.check(np.count_nonzero(g) == 20 and err < 1e-12,
-            "d 200e-6 in the condition: the table's Delta(200 um) = 0 for "
-            "the 120 um particles (smooth rolling rebound, deviation %.1e)"
-            % err)
-
-    # eArgument is a keyword of type rough, so of this condition too: e a
-    # Function1 of the normal impact speed, 0.8 at every speed of the hits
-    # (0.5 to 0.87 m/s), on a smooth wall: the 60 deg group rolls as above
-    # (oracle: the same closed form)
-    case = lc.make_case(os.path.join(work, "eArgument"), groups, ESCAPE,
-                        lowerWall="type roughVelocity; mu0 0.4; "
-                                  "e table ((0 0.8) (10 0.8)); "
-                                  "eArgument normalSpeed; roughnessAngle 0;")
-    run(case)
-    U = particles(case, "0.05")["U"]
-    d = diameters(case, "0.05", len(U))
-    g = np.abs(d - ANGLES[60]) < 1e-9
-    err = np.abs(U[g] - expected).max()
-    t.check(np.count_nonzero(g) == 20 and err < 1e-12,
-            "e as a Function1 of eArgument normalSpeed: accepted, and the "
-            "smooth rolling rebound with e = 0.8 (deviation %.1e)" % err)
+            "%sdeviation %.1e)" % (what, err))
 
 
 def main():
