@@ -442,7 +442,7 @@ def test_bad_input(args, work):
         "type roughVelocity; e 0.8; mu0 0.4; roughnessAngle ((100e-6 20) "
         "(150e-6 20) (200e-6 0) (300e-6 0)); d 200e-6;",
         "d 200e-6 in the condition: the table's Delta(200 um) = 0 for the "
-        "120 um particles (smooth rolling rebound")
+        "120 um particles (smooth rolling rebound, ")
 
     # eArgument is a keyword of type rough, so of this condition too: e a
     # Function1 of the normal impact speed, 0.8 at every speed of the hits
