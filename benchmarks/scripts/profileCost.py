@@ -19,6 +19,12 @@ CPU per hit; the tabulation's CPU time as the log states it.  With
 --callgrind also valgrind's instruction counts of a short run: the model's
 correct() per call (one per wall hit), inclusive.
 
+With --polydisperse (Foundation releases) the parcels' diameters are drawn
+from OpenFOAM's normal distribution (number based, mean 110 um, standard
+deviation 15 um, 80 to 140 um) instead of all 110 um: each hit then looks up
+Delta(d) of a new diameter (the table's cache of the last diameter misses),
+as with a real powder; the constant-Delta variant keeps the Delta of 110 um.
+
 Writes benchmarks/results/<output>.<platform>.csv (default output:
 profile-cost; --rounds 0 --callgrind --output profile-callgrind: the
 instruction counts alone).
@@ -112,6 +118,32 @@ def prepare(case, trace_delta):
     return delta
 
 
+POLYDISPERSE = """sizeDistribution
+    {
+        type        normal;
+        Q           0;
+        min         80e-6;
+        max         140e-6;
+        mu          110e-6;
+        sigma       15e-6;
+    }"""
+
+
+def make_polydisperse(case, platform):
+    """The injectors' fixed 110 um replaced by the normal distribution"""
+    if not platform.foundation:
+        raise SystemExit("profileCost: --polydisperse needs a Foundation "
+                         "release (its distribution syntax)")
+    path = case.file("constant/injectors")
+    text = fc.read_text(path)
+    fixed = re.search(r"sizeDistribution\s*\{[^}]*\}", text)
+    if not fixed or "110" not in fixed.group(0).replace("0.00011", "110"):
+        raise SystemExit("profileCost: no fixed 110 um sizeDistribution in "
+                         + path)
+    fc.write_text(path, text[:fixed.start()] + POLYDISPERSE
+                  + text[fixed.end():])
+
+
 def tabulation(case, log):
     m = re.search(r"tabulated at (\d+) diameters from (\S+) to (\S+) m in "
                   r"(\S+) s CPU", case.log(log))
@@ -128,6 +160,8 @@ def main():
     p.add_argument("--callgrind", action="store_true")
     p.add_argument("--callgrind-parcels", type=int, default=2000)
     p.add_argument("--callgrind-end-time", type=float, default=0.05)
+    p.add_argument("--polydisperse", action="store_true",
+                   help="diameters from a normal distribution, 80-140 um")
     p.add_argument("--output", default="profile-cost",
                    help="stem of the result file in benchmarks/results")
     p.add_argument("--work", default=os.path.join(bc.ROOT, "build",
@@ -143,6 +177,8 @@ def main():
     os.makedirs(work, exist_ok=True)
 
     case, _ = make_case(runner, work, args.parcels, 1, args.end_time)
+    if args.polydisperse:
+        make_polydisperse(case, fc.Platform(args.platform))
     delta = prepare(case, None)
     print("Delta of the trace at 110 um: %.4f deg" % delta, flush=True)
     rows = []
@@ -153,7 +189,7 @@ def main():
             r = run(runner, case, variant, log)
             tab = tabulation(case, log) if variant == "profile" else None
             row = dict(platform=args.platform, round=rnd, variant=variant,
-                       parcels=args.parcels, end_time=args.end_time,
+                       polydisperse=args.polydisperse, parcels=args.parcels, end_time=args.end_time,
                        delta_deg="%.4f" % delta, steps=r["steps"],
                        hits=r["hits"], step_cpu="%.3f" % r["step_cpu"],
                        ns_per_hit="%.1f" % (1e9 * r["step_cpu"] / r["hits"]),
@@ -169,6 +205,8 @@ def main():
         os.makedirs(cg_work, exist_ok=True)
         cg, _ = make_case(runner, cg_work, args.callgrind_parcels, 1,
                           args.callgrind_end_time)
+        if args.polydisperse:
+            make_polydisperse(cg, fc.Platform(args.platform))
         prepare(cg, delta)
         for variant in variants:
             out = cg.file("callgrind.%s.out" % variant)
@@ -181,7 +219,8 @@ def main():
             total, calls, parts, _ = callgrind_profile(
                 out, "RoughWallInteraction<")
             row = dict(platform=args.platform, round="callgrind",
-                       variant=variant, parcels=args.callgrind_parcels,
+                       variant=variant, polydisperse=args.polydisperse,
+                       parcels=args.callgrind_parcels,
                        end_time=args.callgrind_end_time,
                        delta_deg="%.4f" % delta, steps=len(steps),
                        hits=steps[-1]["hits"], total_instructions=total,
