@@ -29,7 +29,9 @@ With --badInput: bad functions stop the run (non-zero exit, no crash):
     taken) and muD 0.5 above mu0 0.4, each a FOAM FATAL IO ERROR naming the
     keyword, the text found and its range;
   - e a table followed by a token ('0.5': before 2026-11-27 OpenFOAM's
-    reader left it unread and the run went on with the table) and e a table
+    reader left it unread and the run went on with the table), e
+    'constant 0.5 0.6' (ran with 0.5; OpenFOAM-14's reader puts the 0.6
+    back after looking for units) and e a table
     out of order (OpenFOAM's "out-of-order value", which names no keyword):
     FOAM FATAL IO ERROR naming the keyword, the patch entry, the token
     left over or OpenFOAM's message, and the allowed forms;
@@ -125,6 +127,10 @@ def bad_input(platform, args):
          ["FOAM FATAL IO ERROR", "keyword 'e'", "lowerWall|upperWall",
           "tokens after the table: '0.5'", "a number in [0, 1], or an "
           "OpenFOAM Function1"]),
+        ("a number after the constant e", SETTINGS.replace(
+            table, "constant 0.5 0.6"),
+         ["FOAM FATAL IO ERROR", "keyword 'e'", "lowerWall|upperWall",
+          "tokens after the constant: '0.6'"]),
         ("e table out of order", SETTINGS.replace(table, foam_table(
             [(0, 0.9), (40, 0.8), (20, 0.85)])),
          ["FOAM FATAL IO ERROR", "keyword 'e'", "lowerWall|upperWall",

@@ -62,14 +62,25 @@ Foam::autoPtr<Foam::Function1<Foam::scalar>> readCoefficient
     if (!e.isDict())
     {
         // The entry's own tokens, where the reader left them (stream()
-        // would rewind them)
-        const ITstream& is = dynamic_cast<const ITstream&>(e);
-        if (is.tokenIndex() < is.size())
+        // would rewind them), and the token a reader peeked at and put
+        // back (OpenFOAM-14's constant looks for units after its value):
+        // peekBack is not const, the entry's stream is read in place as
+        // OpenFOAM's own primitiveEntry::stream() does
+        ITstream& is =
+            const_cast<ITstream&>(dynamic_cast<const ITstream&>(e));
+        token back;
+        const bool hasBack = is.peekBack(back);
+        if (hasBack || is.tokenIndex() < is.size())
         {
             OStringStream left;
+            if (hasBack)
+            {
+                left<< back;
+            }
             for (label toki = is.tokenIndex(); toki < is.size(); ++toki)
             {
-                left<< (toki > is.tokenIndex() ? " " : "") << is[toki];
+                left<< (hasBack || toki > is.tokenIndex() ? " " : "")
+                    << is[toki];
             }
             const string rest = left.str();
             roughWallInput::fatalBadEntry
