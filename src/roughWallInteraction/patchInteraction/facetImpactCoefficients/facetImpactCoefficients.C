@@ -64,12 +64,12 @@ Foam::autoPtr<Foam::Function1<Foam::scalar>> readCoefficient
         // The entry's own tokens, where the reader left them (stream()
         // would rewind them), and the token a reader peeked at and put
         // back (OpenFOAM-14's constant looks for units after its value):
-        // peekBack is not const, the entry's stream is read in place as
-        // OpenFOAM's own primitiveEntry::stream() does
+        // the entry's stream is read in place (peekBack is not const on
+        // every release), as OpenFOAM's own primitiveEntry::stream() does
         ITstream& is =
             const_cast<ITstream&>(dynamic_cast<const ITstream&>(e));
         token back;
-        const bool hasBack = is.peekBack(back);
+        const bool hasBack = roughWallCompat::peekBack(is, back);
         if (hasBack || is.tokenIndex() < is.size())
         {
             OStringStream left;
