@@ -12,7 +12,9 @@ platforms (the settings are #include'd from constant/roughWallSettings):
   13     .../constant/roughWallSettings/roughWallInteractionCoeffs/
          patches.<entry> (OpenFOAM-13 names an included dictionary after
          its file and scopes with '/')  Controls: the unmodified settings
-run and write the statistics file, writeToFile false writes none; without the
+run and write the statistics file, writeToFile false writes none, an entry
+that only matches patches of an earlier entry runs with the earlier one and
+is warned of ("The patches entry lowerWall is never applied"); without the
 libs entry the run fails with OpenFOAM's "Unknown patchInteractionModel type
 roughWallInteraction" (v1912) or "Unknown patch interaction model type
 roughWallInteraction" (OpenFOAM-13), the troubleshooting symptom of the docs.
@@ -169,6 +171,15 @@ CASES = [
      ["keyword 'U'", "roughWallInteractionCoeffs", "writeToFile"]),
     ("patches missing", settings(patches=False),
      ["keyword 'patches'", "roughWallInteractionCoeffs", "missing"]),
+    ("tokens after the patches list",
+     settings().replace("    );\n", "    ) upperWall { type stick; };\n"),
+     ["keyword 'patches'", "roughWallInteractionCoeffs",
+      "a list ( name { type ...; ... }",
+      "tokens after the list's closing ')': 'upperWall { type stick ; }'"]),
+    ("patches entry a bad regular expression",
+     settings().replace('"(lowerWall|upperWall)"', '"(lowerWall|upperWall"'),
+     ["keyword 'patches'", "roughWallInteractionCoeffs",
+      "a list ( name { type ...; ... }", 'entry "(lowerWall|upperWall": ']),
     ("patches entry without dictionary",
      settings(outlet="outlet escape;"),
      ["keyword 'patches'", "roughWallInteractionCoeffs",
@@ -242,6 +253,22 @@ def test():
     rc, _ = case.solve("log.noFile", check_rc=False)
     t.check(rc == 0 and not os.path.exists(stats_dir),
             "control: writeToFile false runs and writes no statistics file")
+
+    # Control: an entry whose patches all take an earlier entry (here a
+    # name after a regular expression that covers it) runs with the
+    # earlier one and is warned of; before 2026-11-27 it was ignored
+    # without a message
+    case.write_settings(settings(outlet="lowerWall { type stick; }\n"
+                                 "        outlet { type escape; }"))
+    rc, _ = case.solve("log.neverApplied", check_rc=False)
+    out = case.log("log.neverApplied")
+    warning = ("The patches entry lowerWall is never applied: every patch "
+               "it matches (lowerWall) takes an earlier entry")
+    t.check(rc == 0 and warning in out
+            and "lowerWall: rough" in out and "stick" not in out.split(
+                "Patch interactions:")[-1].split("outlet:")[0],
+            "control: an entry never applied runs (rc %d) and warns '%s'"
+            % (rc, warning))
 
     check_bad_cases(case, platform, CASES)
 

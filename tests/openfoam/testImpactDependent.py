@@ -28,6 +28,13 @@ With --badInput: bad functions stop the run (non-zero exit, no crash):
     constants: mu0 '0.4 0.5' (two numbers; before 2026-11-27 the first was
     taken) and muD 0.5 above mu0 0.4, each a FOAM FATAL IO ERROR naming the
     keyword, the text found and its range;
+  - e a table followed by a token ('0.5': before 2026-11-27 OpenFOAM's
+    reader left it unread and the run went on with the table), e
+    'constant 0.5 0.6' (ran with 0.5; OpenFOAM-14's reader puts the 0.6
+    back after looking for units) and e a table
+    out of order (OpenFOAM's "out-of-order value", which names no keyword):
+    FOAM FATAL IO ERROR naming the keyword, the patch entry, the token
+    left over or OpenFOAM's message, and the allowed forms;
   - muD a polynomial 0.1 + 0.01 beta with mu0 0.4 (above mu0 beyond 30 deg,
     not checkable at start-up): FOAM FATAL ERROR at the first such facet
     collision naming the patch, "muD = ", "at angle = " and "[0, mu0]".
@@ -116,6 +123,19 @@ def bad_input(platform, args):
         ("muD constant above mu0 beside a function e", SETTINGS.replace(
             foam_table(MUD_TABLE), "0.5"),
          ["FOAM FATAL IO ERROR", "'muD'", "'0.5'", "a number in [0, 0.4]"]),
+        ("a token after the e table", SETTINGS.replace(table, table + " 0.5"),
+         ["FOAM FATAL IO ERROR", "keyword 'e'", "lowerWall|upperWall",
+          "tokens after the table: '0.5'", "a number in [0, 1], or an "
+          "OpenFOAM Function1"]),
+        ("a number after the constant e", SETTINGS.replace(
+            table, "constant 0.5 0.6"),
+         ["FOAM FATAL IO ERROR", "keyword 'e'", "lowerWall|upperWall",
+          "tokens after the constant: '0.6'"]),
+        ("e table out of order", SETTINGS.replace(table, foam_table(
+            [(0, 0.9), (40, 0.8), (20, 0.85)])),
+         ["FOAM FATAL IO ERROR", "keyword 'e'", "lowerWall|upperWall",
+          "out-of-order value: 20", "a number in [0, 1], or an "
+          "OpenFOAM Function1"]),
         ("muD polynomial above mu0", SETTINGS.replace(
             foam_table(MUD_TABLE), polynomial),
          ["FOAM FATAL ERROR", "lowerWall|upperWall", "muD = ",

@@ -7,7 +7,9 @@ Control: a valid trace (foamcase/roughnessProfileOracle.py's) given by a path
 relative to the case runs, and so does one given as $FOAM_CASE/...; the
 profile parameters with an unknown estimate stop.  Then one run per bad
 file: unreadable (missing), fewer than 10 points, x not increasing, NaN, a
-third column; and profile together with RSm.  Same harness and checks as
+third column; a path through an unset environment variable (OpenFOAM's
+expansion stopped without naming the keyword or the file before
+2026-11-27); and profile together with RSm.  Same harness and checks as
 testBadInput.py (FOAM FATAL IO ERROR, the settings file, the patches entry,
 the keyword; no crash).  The expected line numbers are those of the files
 written here.
@@ -70,6 +72,11 @@ CASES = [
     ("three columns", profile("threeColumns"),
      [PROFILE, IN, "constant/threeColumns:5: expected two numbers 'x z', "
       "got '3e-6 0 1'"]),
+    ("unset variable in the path",
+     b.settings({"roughnessAngle": None,
+                 "roughness": '{ profile "$ROUGHWALL_TEST_UNSET/wallProfile"; }'}),
+     [PROFILE, IN, "'$ROUGHWALL_TEST_UNSET/wallProfile':",
+      "ROUGHWALL_TEST_UNSET"]),
     ("profile and RSm",
      b.settings({"roughnessAngle": None,
                  "roughness": '{ profile "constant/wallProfile"; RSm 1e-4; }'}),

@@ -29,7 +29,69 @@ Foam::autoPtr<Foam::Function1<Foam::scalar>> readCoefficient
         value = roughWallInput::readScalar(dict, keyword, r);
         return autoPtr<Function1<scalar>>();
     }
-    return roughWallCompat::newScalarFunction1(keyword, dict);
+
+    // OpenFOAM's Function1 reader, with its errors caught so that the
+    // message names the keyword and file; and every token of the entry
+    // used: the reader stops after the function's data and would leave the
+    // rest unread, without a message ("table (...) 0.5" ran with the table)
+    const string allowed =
+        r.allowed() + ", or an OpenFOAM Function1 of the facet impact, e.g. "
+        "table ((0 0.95) (90 0.75)), with values in that range and nothing "
+        "after it";
+
+    autoPtr<Function1<scalar>> f;
+    string error;
+    if
+    (
+        !roughWallCompat::callCatching
+        (
+            [&]() { f = roughWallCompat::newScalarFunction1(keyword, dict); },
+            error
+        )
+    )
+    {
+        roughWallInput::fatalBadEntry
+        (
+            dict, keyword, allowed, r.meaning,
+            "'" + roughWallInput::entryText(dict, keyword) + "' ("
+          + error + ")"
+        );
+    }
+
+    const entry& e = *roughWallCompat::findLiteral(dict, keyword);
+    if (!e.isDict())
+    {
+        // The entry's own tokens, where the reader left them (stream()
+        // would rewind them), and the token a reader peeked at and put
+        // back (OpenFOAM-14's constant looks for units after its value):
+        // the entry's stream is read in place (peekBack is not const on
+        // every release), as OpenFOAM's own primitiveEntry::stream() does
+        ITstream& is =
+            const_cast<ITstream&>(dynamic_cast<const ITstream&>(e));
+        token back;
+        const bool hasBack = roughWallCompat::peekBack(is, back);
+        if (hasBack || is.tokenIndex() < is.size())
+        {
+            OStringStream left;
+            if (hasBack)
+            {
+                left<< back;
+            }
+            for (label toki = is.tokenIndex(); toki < is.size(); ++toki)
+            {
+                left<< (hasBack || toki > is.tokenIndex() ? " " : "")
+                    << is[toki];
+            }
+            const string rest = left.str();
+            roughWallInput::fatalBadEntry
+            (
+                dict, keyword, allowed, r.meaning,
+                "'" + roughWallInput::entryText(dict, keyword)
+              + "' (tokens after the " + f->type() + ": '" + rest + "')"
+            );
+        }
+    }
+    return f;
 }
 
 } // End anonymous namespace

@@ -331,8 +331,18 @@ void Foam::roughWallPatchSettings::readProfile(const dictionary& dict)
         (
             rDict, "profile", allowed, traceMeaning
         );
+        // OpenFOAM's expansion stops at an unset variable with a message
+        // that names neither the keyword nor the file: caught
         fileName path(given);
-        path.expand();
+        string error;
+        if (!roughWallCompat::callCatching([&]() { path.expand(); }, error))
+        {
+            roughWallInput::fatalBadEntry
+            (
+                rDict, "profile", allowed, traceMeaning,
+                "'" + given + "': " + error
+            );
+        }
         if (!path.isAbsolute())
         {
             path = fileName(getEnv("FOAM_CASE"))/path;
@@ -630,25 +640,76 @@ Foam::roughWallPatchSettings::readPatches
         fatalList("an empty list");
     }
 
-    // Each mesh patch gets the first entry that matches it
+    // The entry ends at its ';': tokens after the list's ')' (an entry
+    // written after it, say) would be ignored silently
+    if (is.tokenIndex() < is.size())
+    {
+        OStringStream left;
+        for (label toki = is.tokenIndex(); toki < is.size(); ++toki)
+        {
+            left<< (toki > is.tokenIndex() ? " " : "") << is[toki];
+        }
+        fatalList
+        (
+            listText + " (tokens after the list's closing ')': '"
+          + left.str() + "')"
+        );
+    }
+
+    // Each mesh patch gets the first entry that matches it; an entry that
+    // matches no patch, or only patches of earlier entries, is never
+    // applied (a typo, or the same name twice): warned
     List<roughWallPatchSettings> result(patches.size());
     boolList covered(patches.size(), false);
-    forAllReverse(entries, entryi)
+    forAll(entries, entryi)
     {
-        const labelList ids
+        const keyType& name = entries[entryi].patchName();
+
+        // OpenFOAM stops at a bad regular expression without naming the
+        // keyword or the file: caught
+        labelList ids;
+        string error;
+        if
         (
-            roughWallCompat::matchingPatches(patches, entries[entryi].patchName())
-        );
+            !roughWallCompat::callCatching
+            (
+                [&]() { ids = roughWallCompat::matchingPatches(patches, name); },
+                error
+            )
+        )
+        {
+            fatalList
+            (
+                listText + " (entry \"" + name + "\": " + error + ")"
+            );
+        }
+
+        DynamicList<word> taken;
+        bool applied = false;
+        for (const label patchi : ids)
+        {
+            if (covered[patchi])
+            {
+                taken.append(patches[patchi].name());
+                continue;
+            }
+            result[patchi] = entries[entryi];
+            covered[patchi] = true;
+            applied = true;
+        }
         if (ids.empty())
         {
             IOWarningInFunction(coeffs)
                 << "No patch matches the patches entry "
-                << entries[entryi].patchName() << endl;
+                << name << endl;
         }
-        for (const label patchi : ids)
+        else if (!applied)
         {
-            result[patchi] = entries[entryi];
-            covered[patchi] = true;
+            IOWarningInFunction(coeffs)
+                << "The patches entry " << name << " is never applied: "
+                << "every patch it matches (" << joined(taken).c_str()
+                << ") takes an earlier entry (the first entry that matches "
+                << "a patch applies)" << endl;
         }
     }
 
