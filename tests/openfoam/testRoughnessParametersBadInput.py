@@ -43,6 +43,10 @@ CASES = [
      ["keyword 'Rq'", IN, POSITIVE]),
     ("Rz zero", rough("Rz 0; RSm 50e-6;"),
      ["keyword 'Rz'", IN, POSITIVE]),
+    # Not a number: read as a number of any sign (the sign is checked
+    # next), so "-inf", not -GREAT's digits, for the open lower bound
+    ("Ra not a number", rough("Ra abc; RSm 50e-6;"),
+     ["keyword 'Ra'", IN, "'abc'", "a number in [-inf, inf]"]),
     ("RSm zero", rough("Ra 1e-6; RSm 0;"),
      ["keyword 'RSm'", IN, POSITIVE]),
     ("RSm missing", rough("Ra 1e-6;"),

@@ -66,12 +66,17 @@ std::size_t editDistance(const std::string& a, const std::string& b)
 }
 
 
-//- Format a bound: integers without a decimal point, "inf" for no bound
+//- Format a bound: integers without a decimal point, "inf" and "-inf" for
+//- no bound
 Foam::string boundText(const Foam::scalar x)
 {
     if (x >= Foam::GREAT)
     {
         return "inf";
+    }
+    if (x <= -Foam::GREAT)
+    {
+        return "-inf";
     }
     Foam::OStringStream os;
     os  << x;
