@@ -35,6 +35,9 @@ With --badInput: bad functions stop the run (non-zero exit, no crash):
     out of order (OpenFOAM's "out-of-order value", which names no keyword):
     FOAM FATAL IO ERROR naming the keyword, the patch entry, the token
     left over or OpenFOAM's message, and the allowed forms;
+  - e the Function1 constant 1.5: checked at start-up like a table (before
+    2026-11-27 only at the first facet collision): FOAM FATAL IO ERROR
+    naming the patch entry, "e = 1.5" and [0, 1];
   - muD a polynomial 0.1 + 0.01 beta with mu0 0.4 (above mu0 beyond 30 deg,
     not checkable at start-up): FOAM FATAL ERROR at the first such facet
     collision naming the patch, "muD = ", "at angle = " and "[0, mu0]".
@@ -136,6 +139,10 @@ def bad_input(platform, args):
          ["FOAM FATAL IO ERROR", "keyword 'e'", "lowerWall|upperWall",
           "out-of-order value: 20", "a number in [0, 1], or an "
           "OpenFOAM Function1"]),
+        ("e constant above 1", SETTINGS.replace(
+            "e               %s;" % table, "e               constant 1.5;"),
+         ["FOAM FATAL IO ERROR", "lowerWall|upperWall", "e = 1.5",
+          "[0, 1]"]),
         ("muD polynomial above mu0", SETTINGS.replace(
             foam_table(MUD_TABLE), polynomial),
          ["FOAM FATAL ERROR", "lowerWall|upperWall", "muD = ",

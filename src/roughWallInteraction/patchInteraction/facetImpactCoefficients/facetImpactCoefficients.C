@@ -180,7 +180,8 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
     }
 
     // Tables: the bounds at their nodes (linear in between, constant
-    // beyond the ends). Anything else: at every call
+    // beyond the ends); constants: at one argument. Anything else: at every
+    // call
     std::vector<double> nodes[3];
     const autoPtr<Function1<scalar>>* functions[3] = {&e_, &mu0_, &muD_};
     for (int i = 0; i < 3; ++i)
@@ -188,7 +189,7 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
         if (functions[i]->valid())
         {
             tmp<scalarField> x;
-            if (roughWallCompat::tableNodes((*functions[i])(), x))
+            if (roughWallCompat::startupCheckNodes((*functions[i])(), x))
             {
                 nodes[i].assign(x().begin(), x().end());
             }
