@@ -176,18 +176,20 @@ Foam::string Foam::roughWallInput::entryText
         return string();
     }
 
+    return eptr->isDict() ? string("{ ... }") : tokensText(eptr->stream());
+}
+
+
+Foam::string Foam::roughWallInput::tokensText
+(
+    const ITstream& is,
+    const label first
+)
+{
     OStringStream os;
-    if (eptr->isDict())
+    for (label toki = first; toki < is.size(); ++toki)
     {
-        os  << "{ ... }";
-    }
-    else
-    {
-        const ITstream& is = eptr->stream();
-        forAll(is, toki)
-        {
-            os  << (toki ? " " : "") << is[toki];
-        }
+        os  << (toki > first ? " " : "") << is[toki];
     }
     return os.str();
 }

@@ -72,17 +72,16 @@ Foam::autoPtr<Foam::Function1<Foam::scalar>> readCoefficient
         const bool hasBack = roughWallCompat::peekBack(is, back);
         if (hasBack || is.tokenIndex() < is.size())
         {
-            OStringStream left;
+            OStringStream putBack;
             if (hasBack)
             {
-                left<< back;
+                putBack<< back;
             }
-            for (label toki = is.tokenIndex(); toki < is.size(); ++toki)
-            {
-                left<< (hasBack || toki > is.tokenIndex() ? " " : "")
-                    << is[toki];
-            }
-            const string rest = left.str();
+            const string after =
+                roughWallInput::tokensText(is, is.tokenIndex());
+            const string rest =
+                putBack.str()
+              + (hasBack && !after.empty() ? " " : "") + after;
             roughWallInput::fatalBadEntry
             (
                 dict, keyword, allowed, r.meaning,

@@ -644,15 +644,10 @@ Foam::roughWallPatchSettings::readPatches
     // written after it, say) would be ignored silently
     if (is.tokenIndex() < is.size())
     {
-        OStringStream left;
-        for (label toki = is.tokenIndex(); toki < is.size(); ++toki)
-        {
-            left<< (toki > is.tokenIndex() ? " " : "") << is[toki];
-        }
         fatalList
         (
             listText + " (tokens after the list's closing ')': '"
-          + left.str() + "')"
+          + roughWallInput::tokensText(is, is.tokenIndex()) + "')"
         );
     }
 
