@@ -151,7 +151,7 @@ Foam::scalar Foam::roughVelocityLagrangianPatchVectorField::readDiameter
         return -1;
     }
 
-    return roughWallInput::readScalar
+    return roughWallInput::readNumber<scalar>
     (
         coeffs, "d",
         {

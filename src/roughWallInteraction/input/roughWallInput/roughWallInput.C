@@ -88,9 +88,11 @@ Foam::string boundText(const Foam::scalar x)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::string Foam::roughWallInput::range::allowed() const
+Foam::string Foam::roughWallInput::range::allowed(const bool integer) const
 {
-    return "a number in [" + boundText(min) + ", " + boundText(max) + "]";
+    return
+        (integer ? "an integer in [" : "a number in [")
+      + boundText(min) + ", " + boundText(max) + "]";
 }
 
 
@@ -195,87 +197,21 @@ Foam::string Foam::roughWallInput::tokensText
 }
 
 
-Foam::scalar Foam::roughWallInput::readScalar
-(
-    const dictionary& dict,
-    const word& keyword,
-    const range& r
-)
-{
-    const scalar value = read<scalar>(dict, keyword, r.allowed(), r.meaning);
-
-    // Written so that NaN fails too
-    if (!(value >= r.min && value <= r.max))
-    {
-        fatalBadEntry
-        (
-            dict, keyword, r.allowed(), r.meaning,
-            "'" + entryText(dict, keyword) + "'"
-        );
-    }
-    return value;
-}
-
-
-Foam::scalar Foam::roughWallInput::readScalarOrDefault
-(
-    const dictionary& dict,
-    const word& keyword,
-    const range& r,
-    const scalar deflt
-)
-{
-    return
-        roughWallCompat::findLiteral(dict, keyword)
-      ? readScalar(dict, keyword, r)
-      : deflt;
-}
-
-
-Foam::label Foam::roughWallInput::readLabelOrDefault
-(
-    const dictionary& dict,
-    const word& keyword,
-    const range& r,
-    const label deflt
-)
-{
-    if (!roughWallCompat::findLiteral(dict, keyword))
-    {
-        return deflt;
-    }
-
-    const string allowed =
-        "an integer in [" + boundText(r.min) + ", " + boundText(r.max) + "]";
-
-    const label value = read<label>(dict, keyword, allowed, r.meaning);
-    if (value < r.min || value > r.max)
-    {
-        fatalBadEntry
-        (
-            dict, keyword, allowed, r.meaning,
-            "'" + entryText(dict, keyword) + "'"
-        );
-    }
-    return value;
-}
-
-
 Foam::label Foam::roughWallInput::readChoice
 (
     const dictionary& dict,
     const word& keyword,
     const wordList& choices,
     const char* meaning,
-    const label deflt
+    const std::optional<label>& deflt
 )
 {
-    if (deflt >= 0 && !roughWallCompat::findLiteral(dict, keyword))
+    if (deflt && !roughWallCompat::findLiteral(dict, keyword))
     {
-        return deflt;
+        return *deflt;
     }
 
-    string allowed = "one of " + Foam::name(choices.size()) + " words:";
+    string allowed = "one of";
     for (const word& w : choices)
     {
         allowed += " " + w;
@@ -291,18 +227,18 @@ Foam::label Foam::roughWallInput::readChoice
 }
 
 
-bool Foam::roughWallInput::readSwitchOrDefault
+bool Foam::roughWallInput::readSwitch
 (
     const dictionary& dict,
     const word& keyword,
     const char* meaning,
-    const bool deflt
+    const std::optional<bool>& deflt
 )
 {
     return
-        roughWallCompat::findLiteral(dict, keyword)
-      ? bool(read<Switch>(dict, keyword, "true/false, on/off, yes/no", meaning))
-      : deflt;
+        deflt && !roughWallCompat::findLiteral(dict, keyword)
+      ? *deflt
+      : bool(read<Switch>(dict, keyword, "true/false, on/off, yes/no", meaning));
 }
 
 

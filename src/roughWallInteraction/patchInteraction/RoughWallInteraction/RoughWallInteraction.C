@@ -334,14 +334,14 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
         this->writeToFile_ = false;
     }
 
-    const bool writeToFile = roughWallInput::readSwitchOrDefault
+    const bool writeToFile = roughWallInput::readSwitch
     (
         roughWallCompat::coeffs(*this), "writeToFile",
         "write the statistics under postProcessing/ (default: true)",
         true
     );
 
-    const label precision = roughWallInput::readLabelOrDefault
+    const label precision = roughWallInput::readNumber<label>
     (
         roughWallCompat::coeffs(*this), "writePrecision",
         {1, 17, "significant digits of the statistics file (default: "

@@ -26,7 +26,7 @@ Foam::autoPtr<Foam::Function1<Foam::scalar>> readCoefficient
     using namespace Foam;
     if (!Foam::facetImpactCoefficients::isFunction(dict, keyword))
     {
-        value = roughWallInput::readScalar(dict, keyword, r);
+        value = roughWallInput::readNumber<scalar>(dict, keyword, r);
         return autoPtr<Function1<scalar>>();
     }
 

@@ -130,7 +130,7 @@ Foam::roughWallPatchSettings::types[5] =
         {"roughness", nullptr, nullptr},    // read with roughnessAngle
         {
             "lateralTilt",
-            ROUGHWALL_READ(rough_.lateralTilt, roughWallInput::readSwitchOrDefault
+            ROUGHWALL_READ(rough_.lateralTilt, roughWallInput::readSwitch
             (
                 d, "lateralTilt",
                 "isotropic 3-D roughness: also tilt facets sideways by "
@@ -141,7 +141,7 @@ Foam::roughWallPatchSettings::types[5] =
         },
         {
             "maxFacetCollisions",
-            ROUGHWALL_READ(rough_.maxFacetCollisions, roughWallInput::readLabelOrDefault
+            ROUGHWALL_READ(rough_.maxFacetCollisions, roughWallInput::readNumber<label>
             (
                 d, "maxFacetCollisions",
                 {
@@ -158,13 +158,13 @@ Foam::roughWallPatchSettings::types[5] =
     {"rebound", {
         {
             "e",
-            ROUGHWALL_READ(e_, roughWallInput::readScalarOrDefault(d, "e",
+            ROUGHWALL_READ(e_, roughWallInput::readNumber<scalar>(d, "e",
                 {0, 1, "normal restitution coefficient (default: 1)"}, 1)),
             ROUGHWALL_WRITE(s.e_)
         },
         {
             "mu",
-            ROUGHWALL_READ(mu_, roughWallInput::readScalarOrDefault(d, "mu",
+            ROUGHWALL_READ(mu_, roughWallInput::readNumber<scalar>(d, "mu",
                 {0, 1, "fraction of the tangential velocity lost (default: 0)"},
                 0)),
             ROUGHWALL_WRITE(s.mu_)
@@ -382,7 +382,7 @@ void Foam::roughWallPatchSettings::readProfile(const dictionary& dict)
         // The signs are checked with the other limits below
         *values[i] =
             given[i]
-          ? roughWallInput::readScalar
+          ? roughWallInput::readNumber<scalar>
             (
                 rDict, name, {-GREAT, GREAT, meanings[i]}
             )

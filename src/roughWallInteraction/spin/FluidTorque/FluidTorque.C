@@ -29,6 +29,7 @@ License
 
 #include "FluidTorque.H"
 #include "spinModelInput.H"
+#include "roughWallInput.H"
 #include "foamCompat.H"
 #include "coreBridge.H"
 #include "fvcCurl.H"
@@ -71,7 +72,7 @@ Foam::FluidTorque<CloudType>::FluidTorque
         );
     }
 
-    spinModelInput::checkKeywords(dict, typeName, {"type", "coefficient"});
+    roughWallInput::checkKeywords(dict, {"type", "coefficient"}, typeName);
 
     coefficient_ = spinModelInput::readTorqueCoefficient(dict);
 

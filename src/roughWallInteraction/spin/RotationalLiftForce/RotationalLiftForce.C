@@ -29,6 +29,7 @@ License
 
 #include "RotationalLiftForce.H"
 #include "spinModelInput.H"
+#include "roughWallInput.H"
 #include "foamCompat.H"
 #include "coreBridge.H"
 #include "fvcCurl.H"
@@ -57,7 +58,7 @@ Foam::RotationalLiftForce<CloudType>::RotationalLiftForce
         );
     }
 
-    spinModelInput::checkKeywords(this->coeffs(), typeName, {"coefficient"});
+    roughWallInput::checkKeywords(this->coeffs(), {"coefficient"}, typeName);
 
     coefficient_ = spinModelInput::readLiftCoefficient(this->coeffs());
 

@@ -37,53 +37,6 @@ License
 namespace
 {
 
-//- The word of keyword: one of names (index returned), deflt if absent
-Foam::label readChoice
-(
-    const Foam::dictionary& dict,
-    const Foam::word& keyword,
-    const Foam::wordList& names,
-    const Foam::label deflt,
-    const char* meaning
-)
-{
-    using namespace Foam;
-
-    const entry* eptr = roughWallCompat::findLiteral(dict, keyword);
-
-    if (!eptr)
-    {
-        return deflt;
-    }
-
-    string allowed = "one of";
-    for (const word& n : names)
-    {
-        allowed += " " + n;
-    }
-
-    if (!eptr->isDict())
-    {
-        const ITstream& is = eptr->stream();
-        if (is.size() == 1 && is[0].isWord())
-        {
-            forAll(names, i)
-            {
-                if (is[0].wordToken() == names[i])
-                {
-                    return i;
-                }
-            }
-        }
-    }
-
-    roughWallInput::fatalBadEntry
-    (
-        dict, keyword, allowed, meaning,
-        "'" + roughWallInput::entryText(dict, keyword) + "'"
-    );
-}
-
 //- Names of the coefficients, in the order of the core's enumerations
 const Foam::wordList liftNames{"RubinowKeller", "OesterleBuiDinh", "Loth"};
 const Foam::wordList torqueNames{"Stokes", "DennisSinghIngham"};
@@ -100,14 +53,14 @@ roughWall::spin::LiftCoefficient Foam::spinModelInput::readLiftCoefficient
 {
     using roughWall::spin::LiftCoefficient;
 
-    const label i = readChoice
+    const label i = roughWallInput::readChoice
     (
         dict, "coefficient", liftNames,
-        label(LiftCoefficient::OesterleBuiDinh),
         "rotational lift coefficient C_LR: OesterleBuiDinh (Oesterle & "
         "Bui Dinh 1998), RubinowKeller (Rubinow & Keller 1961, Re_p << 1) "
         "or Loth (Loth 2008, Re_p < 2000, Omega* = 2 Gamma < 20)"
-        " (default: OesterleBuiDinh)"
+        " (default: OesterleBuiDinh)",
+        label(LiftCoefficient::OesterleBuiDinh)
     );
 
     return LiftCoefficient(i);
@@ -122,13 +75,13 @@ Foam::spinModelInput::readTorqueCoefficient
 {
     using roughWall::spin::TorqueCoefficient;
 
-    const label i = readChoice
+    const label i = roughWallInput::readChoice
     (
         dict, "coefficient", torqueNames,
-        label(TorqueCoefficient::DennisSinghIngham),
         "rotational drag coefficient C_R: DennisSinghIngham (Dennis, Singh "
         "& Ingham 1980) or Stokes (64 pi/Re_R at every Re_R) (default: "
-        "DennisSinghIngham)"
+        "DennisSinghIngham)",
+        label(TorqueCoefficient::DennisSinghIngham)
     );
 
     return TorqueCoefficient(i);
@@ -150,17 +103,6 @@ Foam::word Foam::spinModelInput::name
 )
 {
     return torqueNames[label(c)];
-}
-
-
-void Foam::spinModelInput::checkKeywords
-(
-    const dictionary& dict,
-    const word& model,
-    const wordList& used
-)
-{
-    roughWallInput::checkKeywords(dict, used, model);
 }
 
 
