@@ -300,17 +300,13 @@ Foam::roughWallPatchSettings::readPatches
         }
         is.putBack(brace);
 
+        const fileName dictName
+        (
+            "patches" + (roughWallCompat::scopeSeparator + name)
+        );
         entries.append
         (
-            roughWallPatchSettings
-            (
-                name,
-                dictionary
-                (
-                    fileName("patches" + (roughWallCompat::scopeSeparator + name)),
-                    coeffs, is
-                )
-            )
+            roughWallPatchSettings(name, dictionary(dictName, coeffs, is))
         );
     }
     if (entries.empty())

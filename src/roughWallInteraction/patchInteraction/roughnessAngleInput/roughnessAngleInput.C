@@ -192,7 +192,8 @@ roughWall::RoughnessAngle readProfile(const dictionary& dict)
     // Named after the patch entry, so that the messages point at it (a
     // sub-dictionary of an entry read from a stream loses that name)
     dictionary rDict(e.dict());
-    rDict.name() = fileName(dict.name() + roughWallCompat::scopeSeparator + "roughness");
+    rDict.name() =
+        fileName(dict.name() + roughWallCompat::scopeSeparator + "roughness");
 
     static const wordList names{"profile", "Ra", "Rq", "Rz", "RSm", "estimate"};
     static const char* const meanings[] =
