@@ -34,6 +34,12 @@ import math
 import os
 import sys
 
+# The project's package (src/python; Allrun, Alltest and ctest put it on
+# PYTHONPATH): its check that keeps going, and its CSV reader
+from foamcase.checking import FAILED as failures
+from foamcase.checking import expect as check
+from foamcase.tables import read_csv
+
 N_BINS = 25
 MARGIN_SE = 3.0
 VARIANT = "rough5"
@@ -48,27 +54,17 @@ FIGURES = ("concentration.png", "velocity.png", "wallHits.png", "spinUp.png",
            "spinRatios.png")
 TEXT = {"variant", "wallModel", "geometry", "lateralTilt", "lift", "torque"}
 
-failures = []
 #: The quantitative checks: (check, measured, required, margin)
 records = []
 
 
-# check and read_csv are this script's own, not foamcase's: the script runs
-# with the standard library only (the tutorial's Alltest and writeReadme.py
-# import it without the project's package on the path).
-def check(condition, message):
-    print(("PASS  " if condition else "FAIL  ") + message, flush=True)
-    if not condition:
-        failures.append(message)
-    return condition
-
-
-def read_csv(path):
-    if not os.path.isfile(path) or os.path.getsize(path) == 0:
+def read_results(path):
+    """The rows of a results table (foamcase's read_csv); a missing or empty
+    file is a failed check and the end of the script."""
+    if not (os.path.isfile(path) and os.path.getsize(path) > 0):
         check(False, "%s exists and is not empty" % path)
         sys.exit(1)
-    with open(path) as f:
-        return list(csv.DictReader(f))
+    return read_csv(path)
 
 
 def finite_numbers(rows, name, text_columns):
@@ -93,11 +89,11 @@ def sanity(out):
         p = os.path.join(out, fig)
         check(os.path.isfile(p) and os.path.getsize(p) > 1000,
               "figure %s written" % fig)
-    profiles = read_csv(os.path.join(out, "profiles.csv"))
+    profiles = read_results(os.path.join(out, "profiles.csv"))
     finite_numbers(profiles, "profiles.csv", {"variant"})
-    summary = read_csv(os.path.join(out, "summary.csv"))
+    summary = read_results(os.path.join(out, "summary.csv"))
     finite_numbers(summary, "summary.csv", TEXT)
-    ratios = read_csv(os.path.join(out, "spinRatios.csv"))
+    ratios = read_results(os.path.join(out, "spinRatios.csv"))
     finite_numbers(ratios, "spinRatios.csv", TEXT)
     for row in summary:
         rows = [r for r in profiles if r["variant"] == row["variant"]]
@@ -148,7 +144,7 @@ def main():
     # 3. Within the band of the committed result
     if reference:
         ref = {r["variant"]: r for r in
-               read_csv(os.path.join(reference, "summary.csv"))}
+               read_results(os.path.join(reference, "summary.csv"))}
         if check(VARIANT in ref, "variant %s in the reference %s"
                  % (VARIANT, reference)):
             for key in BAND:

@@ -25,7 +25,7 @@ from foamcase import lagrangian
 from foamcase import tutorial as tc
 
 
-def time_dirs(case):
+def write_times(case):
     """Write times (> 0) of a case, as (name, value), sorted by value."""
     return [(name, value) for value, name in lagrangian.time_dirs(case)
             if value > 0]
@@ -76,14 +76,14 @@ def wall_impacts(case, time, area):
 
 def prune(case, keep):
     """Remove every write time except 0 and keep."""
-    for name, _ in time_dirs(case):
+    for name, _ in write_times(case):
         if name != keep:
             shutil.rmtree(os.path.join(case, name))
 
 
 def main():
     case = sys.argv[1]
-    times = time_dirs(case)
+    times = write_times(case)
     if not times:
         raise SystemExit("%s: no write times" % case)
     mesh = tc.read_mesh(case)
