@@ -12,7 +12,8 @@ platforms (the settings are #include'd from constant/roughWallSettings):
   13     .../constant/roughWallSettings/roughWallInteractionCoeffs/
          patches.<entry> (OpenFOAM-13 names an included dictionary after
          its file and scopes with '/')  Controls: the unmodified settings
-run and write the statistics file, writeToFile false writes none, an entry
+run, write the statistics file and summarise each patch's settings in the
+log (a rebound outlet too), writeToFile false writes none, an entry
 that only matches patches of an earlier entry runs with the earlier one and
 is warned of ("The patches entry lowerWall is never applied"); without the
 libs entry the run fails with OpenFOAM's "Unknown patchInteractionModel type
@@ -242,6 +243,24 @@ def test():
     case.write_settings(settings())
     rc, _ = case.solve("log.good", check_rc=False)
     t.check(rc == 0, "control: the valid settings run (rc %d)" % rc)
+
+    # The settings' summary in the log: each keyword of the type with the
+    # value ROUGH gives it or its default (lateralTilt false,
+    # maxFacetCollisions 10; rebound's e 1 and mu 0), per mesh patch; whole
+    # lines
+    def check_summary(log, lines):
+        out = [line.strip() for line in case.log(log).splitlines()]
+        for line in lines:
+            t.check(line in out, "log summary: '%s'" % line)
+
+    check_summary("log.good", [
+        "%s: rough: e = 0.8, mu0 = 0.4, muD = 0.4, roughnessAngle = 8 deg, "
+        "lateralTilt = false, maxFacetCollisions = 10" % patch
+        for patch in ("lowerWall", "upperWall")] + ["outlet: escape"])
+    case.write_settings(settings(outlet="outlet { type rebound; mu 0.2; }"))
+    rc, _ = case.solve("log.rebound", check_rc=False)
+    t.check(rc == 0, "control: rebound on the outlet runs (rc %d)" % rc)
+    check_summary("log.rebound", ["outlet: rebound: e = 1, mu = 0.2"])
 
     # Control: writeToFile false writes no statistics file
     stats_dir = case.file("postProcessing")

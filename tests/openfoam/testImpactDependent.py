@@ -16,6 +16,8 @@ interpolated by numpy: one facet collision averaged over P(gamma, alpha)
 collision with the mean wall that maxFacetCollisions 1 makes (nothing from
 the C++). Mean k_n and k_t per angle within 4 standard errors of the
 parcels' means (+1e-6 for the quadrature).
+The settings' summary in the log names each keyword with its value (the
+functions by type and argument) and the outlet's type.
 Control: the constants of the tables at 20 deg (e 0.85, muD 0.22) give a
 quadrature that the parcels must miss by more than 4 standard errors at one
 angle at least (the functions are used, not their value at one angle).
@@ -177,6 +179,20 @@ def test():
                               settings=SETTINGS)
     case.mesh(1)
     case.solve()
+
+    # The settings' summary in the log: each keyword of type rough with its
+    # value as SETTINGS gives it (a function by its type and argument), the
+    # default lateralTilt, and the outlet's type; whole lines ("= 1" is also
+    # the start of "= 10")
+    log = [line.strip() for line in case.log().splitlines()]
+    function = "table of the facet impact angle [deg]"
+    for patch in ("lowerWall", "upperWall"):
+        line = ("%s: rough: e = %s, mu0 = 0.4, muD = %s, roughnessAngle = 8 "
+                "deg, lateralTilt = false, maxFacetCollisions = 1"
+                % (patch, function, function))
+        t.check(line in log, "log summary: '%s'" % line)
+    t.check("outlet: escape" in log, "log summary: 'outlet: escape'")
+
     parcels = case.read_cloud(END_TIME, ["U", "d"])
     U, d = parcels["U"], parcels["d"]
     n_total = len(t.ANGLES)*args.parcels

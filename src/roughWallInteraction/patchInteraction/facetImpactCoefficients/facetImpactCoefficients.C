@@ -206,12 +206,8 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
         }
         const auto valueAt = [&](const std::string& name, double x)
         {
-            const autoPtr<Function1<scalar>>& f =
-                name == "e" ? e_ : name == "mu0" ? mu0_ : muD_;
-            const scalar c =
-                name == "e" ? constants_.e
-              : name == "mu0" ? constants_.mu0 : constants_.muD;
-            return f.valid() ? f->value(x) : c;
+            const autoPtr<Function1<scalar>>& f = function(name);
+            return f.valid() ? f->value(x) : constant(name);
         };
         try
         {
@@ -256,13 +252,30 @@ bool Foam::facetImpactCoefficients::isFunction
 }
 
 
+const Foam::autoPtr<Foam::Function1<Foam::scalar>>&
+Foam::facetImpactCoefficients::function(const std::string& name) const
+{
+    return name == "e" ? e_ : name == "mu0" ? mu0_ : muD_;
+}
+
+
+Foam::scalar Foam::facetImpactCoefficients::constant
+(
+    const std::string& name
+) const
+{
+    return
+        name == "e" ? constants_.e
+      : name == "mu0" ? constants_.mu0 : constants_.muD;
+}
+
+
 Foam::string Foam::facetImpactCoefficients::description
 (
     const word& name
 ) const
 {
-    const autoPtr<Function1<scalar>>& f =
-        name == "e" ? e_ : name == "mu0" ? mu0_ : muD_;
+    const autoPtr<Function1<scalar>>& f = function(name);
     OStringStream os;
     if (f.valid())
     {
@@ -275,8 +288,7 @@ Foam::string Foam::facetImpactCoefficients::description
     }
     else
     {
-        os  << (name == "e" ? constants_.e
-              : name == "mu0" ? constants_.mu0 : constants_.muD);
+        os  << constant(name);
     }
     return os.str();
 }
