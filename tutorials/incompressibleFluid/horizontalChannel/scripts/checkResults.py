@@ -34,8 +34,15 @@ import math
 import os
 import sys
 
-# The project's package (src/python; Allrun, Alltest and ctest put it on
-# PYTHONPATH): its check that keeps going, and its CSV reader
+# The project's package (src/python): its check that keeps going, and its
+# CSV reader.  Allrun and Alltest put it on PYTHONPATH; run on its own (or
+# imported by writeReadme.py), the script takes that of $ROUGHWALL_ROOT,
+# else of the checkout holding this tutorial, as Allrun finds it
+sys.path.append(os.path.join(
+    os.environ.get("ROUGHWALL_ROOT")
+    or os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                    "..", ".."),
+    "src", "python"))
 from foamcase.checking import FAILED as failures
 from foamcase.checking import expect as check
 from foamcase.tables import read_csv
