@@ -296,6 +296,16 @@ def incident_velocity(angle, wall_velocity=0.0):
     return np.array([math.cos(a) - wall_velocity, -math.sin(a), 0.0])
 
 
+def check_summary(case, log, lines):
+    """Check that the log has each of lines as a whole line (stripped): the
+    model's summary of the patch settings ("lowerWall: rough: e = 0.8,
+    ..."), where a substring would let "maxFacetCollisions = 1" match
+    "= 10"."""
+    out = [line.strip() for line in case.log(log).splitlines()]
+    for line in lines:
+        check(line in out, "log summary: '%s'" % line)
+
+
 def relative_angle(angle, wall_velocity=0.0):
     """Incidence angle [deg] relative to the wall moving along x."""
     if wall_velocity == 0:

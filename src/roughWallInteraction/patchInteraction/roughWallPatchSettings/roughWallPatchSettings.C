@@ -33,14 +33,9 @@ License
 #include "roughnessAngleInput.H"
 #include "foamCompat.H"
 #include "roughWallLimits.hpp"
-#include "OSspecific.H"
-#include "Tuple2.H"
-#include "OStringStream.H"
 #include "emptyPolyPatch.H"
 #include "wedgePolyPatch.H"
 #include "wallPolyPatch.H"
-
-#include <ctime>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -103,10 +98,7 @@ Foam::roughWallPatchSettings::types[5] =
         {"eArgument", nullptr, nullptr},     // read with e
         {
             "roughnessAngle",
-            [](settings& s, const dictionary& d)
-            {
-                s.roughness_ = roughnessAngleInput::read(d);
-            },
+            ROUGHWALL_READ(roughness_, roughnessAngleInput::read(d)),
             ROUGHWALL_WRITE(s.roughness_.describe().c_str())
         },
         {"roughness", nullptr, nullptr},    // read with roughnessAngle

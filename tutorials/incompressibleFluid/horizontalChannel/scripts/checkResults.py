@@ -35,9 +35,9 @@ import os
 import sys
 
 # The project's package (src/python): its check that keeps going, and its
-# CSV reader.  Allrun and Alltest put it on PYTHONPATH; run on its own (or
-# imported by writeReadme.py), the script takes that of $ROUGHWALL_ROOT,
-# else of the checkout holding this tutorial, as Allrun finds it
+# CSV reader: that of $ROUGHWALL_ROOT (Allrun and Alltest set it), else of
+# the checkout holding this tutorial, as Allrun finds it; so that Alltest,
+# writeReadme.py (which imports this script) and a user run it alike
 sys.path.append(os.path.join(
     os.environ.get("ROUGHWALL_ROOT")
     or os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
