@@ -39,6 +39,21 @@ License
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
+inline void Foam::RoughWallInteraction<CloudType>::watchWallVelocity
+(
+    const label patchi,
+    const vector& Up
+)
+{
+    const scalar speedSqr = magSqr(Up);
+    if (speedSqr > wallSpeedSqr_[patchi])
+    {
+        wallSpeedSqr_[patchi] = speedSqr;
+    }
+}
+
+
+template<class CloudType>
 void Foam::RoughWallInteraction<CloudType>::rebound
 (
     parcelType& p,
