@@ -4,6 +4,7 @@ plane.
 
 Fires N parcels per incidence angle (10, 30, 60 deg, in the x-y plane) at a
 rough lowerWall with lateralTilt ON, in a one-cell-thick mesh.  Checks:
+  - the log warns, for each wall, that lateralTilt has no effect in 2-D;
   - every parcel is kept, hits the wall once and leaves it;
   - v_z == 0 and (cloud with spin) omega_x == omega_y == 0 exactly for every
     parcel, while the spin about z is non-zero.  (OpenFOAM itself also zeroes
@@ -13,9 +14,9 @@ rough lowerWall with lateralTilt ON, in a one-cell-thick mesh.  Checks:
     the reference WITHOUT lateral tilt: a lateral tilt leaking into 2-D would
     shift mean k_n by about 5.5 standard errors at 30 and 60 deg with the
     default N = 30000.
-Control on the 3-D mesh with the same settings: v_z (and omega_x) are
-non-zero for most parcels and the statistics agree with the reference WITH
-lateral tilt.
+Control on the 3-D mesh with the same settings: no such warning, v_z (and
+omega_x) are non-zero for most parcels and the statistics agree with the
+reference WITH lateral tilt.
 
 Usage: test2D.py --platform openfoam13|openfoam1912 --cloud colliding|kinematic
            [--parcels N] [--parcels3D N] [--work DIR]
@@ -25,6 +26,7 @@ SPDX-License-Identifier: GPL-3.0-or-later
 
 import argparse
 import os
+import re
 
 import numpy as np
 
@@ -32,6 +34,9 @@ from foamcase import testing as t
 import foamcase as fc
 
 END_TIME = "0.05"
+
+# The warning for lateralTilt true on a 2-D mesh (roughWallPatchSettings)
+NO_EFFECT = "lateralTilt true has no effect on this 2-D mesh"
 
 SETTINGS = t.DEFAULT_SETTINGS.replace(
     "roughnessAngle  8;", "roughnessAngle  8;\n            lateralTilt     true;")
@@ -69,6 +74,11 @@ def test():
     case, parcels = run_case(args, True, args.parcels)
     t.check("2-D case: no lateral facet tilt" in case.log(),
             "the model reports the 2-D treatment in the log")
+    warned = sorted(re.findall(r"Patch (\w+) \(entry .*?\): " + NO_EFFECT,
+                               case.log()))
+    t.check(warned == ["lowerWall", "upperWall"],
+            "2-D: lateralTilt true warned of, once for each wall the rough "
+            "entry covers and for no other patch (warned: %s)" % warned)
 
     U = parcels["U"]
     t.check(len(U) == n_total, "2-D: all %d parcels kept" % n_total)
@@ -92,7 +102,9 @@ def test():
                                "2-D, lateralTilt on, vs in-plane reference: ")
 
     # Control: the lateral tilt does act in 3-D
-    _, parcels3 = run_case(args, False, args.parcels3D)
+    case3, parcels3 = run_case(args, False, args.parcels3D)
+    t.check(NO_EFFECT not in case3.log(),
+            "3-D control: no warning that lateralTilt has no effect")
     U3 = parcels3["U"]
     t.check(len(U3) == 3 * args.parcels3D, "3-D control: all parcels kept")
     t.check(np.count_nonzero(U3[:, 2]) > 0.9 * len(U3),

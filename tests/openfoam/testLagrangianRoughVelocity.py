@@ -11,8 +11,9 @@ kinematicParticle cloud without forces (src/python/foamcase/lagrangianCase.py).
     every one leaves the wall; mean and sd of k_n and k_t per angle against
     the oracle (src/python/foamcase/roughWallOracle.py, an independent numpy Monte
     Carlo of the operator without spin, 1e6 samples) within 4 combined
-    standard errors; --twoD: the case is 2-D (empty front and back) and
-    U_z = 0 exactly.
+    standard errors; --twoD: the case is 2-D (empty front and back), the
+    condition says lateralTilt true, which the log warns has no effect,
+    and U_z = 0 exactly (statistics against the reference without it).
 --test smooth: Delta = 0 (roughnessAngle 0) against reboundVelocity's law
     U'' = -e U_n n + (1 - mu) U_t written in this test, with mu derived by
     hand for the spin-free facet collision (docs/theory.md, model notes
@@ -125,10 +126,17 @@ def diameters(case, time_name, n):
 def test_flat_wall(args, work):
     rng = np.random.default_rng(1)
     n = args.particles
+    # 2-D: with lateralTilt true, which has no effect there (warned)
+    lower = ROUGH % args.roughness + (" lateralTilt true;" if args.twoD else "")
     case = lc.make_case(os.path.join(work, "case"),
                         flat_wall_groups(n, rng, args.twoD), ESCAPE,
-                        lowerWall=ROUGH % args.roughness, two_d=args.twoD)
+                        lowerWall=lower, two_d=args.twoD)
     run(case)
+    if args.twoD:
+        log = fc.read_text(os.path.join(case, "log.foamRun"))
+        t.check("Patch lowerWall (entry lowerWall): lateralTilt true has no "
+                "effect on this 2-D mesh" in log,
+                "2-D, lateralTilt true: warned of in the log")
     p = particles(case, "0.05")
     U = p["U"]
     t.check(len(U) == 3*n, "all %d particles in the cloud at t = 0.05 s "

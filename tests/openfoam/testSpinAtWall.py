@@ -178,6 +178,12 @@ def test():
     case.set_control(endTime=repr(END), writeInterval=str(int(round(END / DT))))
     case.solve("log.solver.2")
 
+    if two_d:
+        # Control of test2D's warning: rough, lateralTilt false, 2-D
+        t.check("lateralTilt true has no effect" not in
+                case.log("log.solver.1") + case.log("log.solver.2"),
+                "2-D without lateralTilt: no warning about it")
+
     p = case.read_cloud(repr(END), ["U", "d", "angularMomentum"])
     t.check(len(p["d"]) == len(names) * args.parcels,
             "all parcels in the domain at t = %g" % END)

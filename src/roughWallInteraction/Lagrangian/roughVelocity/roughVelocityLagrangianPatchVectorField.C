@@ -247,7 +247,13 @@ roughVelocityLagrangianPatchVectorField
     coeffs_(coeffsDict(dict)),
     rough_(keyType(p.name()), roughDict(coeffs_)),
     d_(readDiameter(coeffs_))
-{}
+{
+    const polyMesh& mesh = roughWallCompat::polyMeshOf(p.boundaryMesh().mesh());
+    if (roughWallCompat::emptyComponent(mesh) >= 0)
+    {
+        rough_.warnLateralTiltIn2D(p.name());
+    }
+}
 
 
 Foam::roughVelocityLagrangianPatchVectorField::
@@ -306,18 +312,10 @@ void Foam::roughVelocityLagrangianPatchVectorField::evaluate
     const vectorField Uf(subMesh.Uf<vectorField>(fraction));
 
     // 2-D: the velocity in the plane (the core keeps it there)
-    const polyMesh& pMesh = roughWallCompat::polyMeshOf(subMesh.mesh());
-    label emptyCmpt = -1;
-    if (pMesh.nSolutionD() == 2)
-    {
-        for (direction cmpt = 0; cmpt < vector::nComponents; ++cmpt)
-        {
-            if (pMesh.solutionD()[cmpt] == -1)
-            {
-                emptyCmpt = cmpt;
-            }
-        }
-    }
+    const label emptyCmpt = roughWallCompat::emptyComponent
+    (
+        roughWallCompat::polyMeshOf(subMesh.mesh())
+    );
     roughWall::Vec3 emptyDirection(roughWall::Vec3::Zero());
     if (emptyCmpt >= 0)
     {

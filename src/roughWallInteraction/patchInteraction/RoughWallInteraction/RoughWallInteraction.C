@@ -244,39 +244,6 @@ void Foam::RoughWallInteraction<CloudType>::reportWallVelocity(Ostream& os)
 
 
 template<class CloudType>
-Foam::label Foam::RoughWallInteraction<CloudType>::findEmptyComponent
-(
-    const polyMesh& mesh
-)
-{
-    if (mesh.nSolutionD() == 3)
-    {
-        return -1;
-    }
-
-    const Vector<label>& solutionD = mesh.solutionD();
-
-    if (mesh.nSolutionD() == 2)
-    {
-        for (direction cmpt = 0; cmpt < vector::nComponents; ++cmpt)
-        {
-            if (solutionD[cmpt] == -1)
-            {
-                return cmpt;
-            }
-        }
-    }
-
-    FatalErrorInFunction
-        << "roughWallInteraction needs a 2-D or 3-D mesh; this mesh solves "
-        << mesh.nSolutionD() << " direction(s) (solutionD = " << solutionD
-        << ")." << exit(FatalError);
-
-    return -1;
-}
-
-
-template<class CloudType>
 void Foam::RoughWallInteraction<CloudType>::checkCoeffsKeywords() const
 {
     // Settings put at the wrong level (e.g. e or lateralTilt outside the
@@ -327,13 +294,20 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
 
     if (anyRough)
     {
-        emptyComponent_ = findEmptyComponent(cloud.mesh());
+        emptyComponent_ = roughWallCompat::emptyComponent(cloud.mesh());
 
         if (emptyComponent_ >= 0)
         {
             Info<< "    2-D case: no lateral facet tilt, no velocity or spin "
                 << "out of the plane normal to "
                 << vector::componentNames[emptyComponent_] << nl;
+
+            const polyBoundaryMesh& meshPatches =
+                roughWallCompat::boundary(cloud.mesh());
+            forAll(patches_, patchi)
+            {
+                patches_[patchi].warnLateralTiltIn2D(meshPatches[patchi].name());
+            }
         }
 
         Info<< "    Rough-wall parcels carry spin: "

@@ -469,6 +469,18 @@ Foam::wordList Foam::roughWallPatchSettings::keywords
 }
 
 
+void Foam::roughWallPatchSettings::warnLateralTiltIn2D(const word& patch) const
+{
+    if (type_ == interactionType::rough && rough_.lateralTilt)
+    {
+        WarningInFunction
+            << "Patch " << patch << " (entry " << patchName_ << "): "
+            << "lateralTilt true has no effect on this 2-D mesh: its facets "
+            << "are tilted in the plane of the mesh only" << endl;
+    }
+}
+
+
 void Foam::roughWallPatchSettings::writeSummary(Ostream& os) const
 {
     os  << typeName();
