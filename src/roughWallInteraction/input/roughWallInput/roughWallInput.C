@@ -218,7 +218,8 @@ Foam::label Foam::roughWallInput::readChoice
     }
 
     const word found = read<word>(dict, keyword, allowed, meaning);
-    const label i = std::find(choices.begin(), choices.end(), found) - choices.begin();
+    const label i =
+        std::find(choices.begin(), choices.end(), found) - choices.begin();
     if (i == choices.size())
     {
         fatalBadEntry(dict, keyword, allowed, meaning, "'" + found + "'");
@@ -238,7 +239,10 @@ bool Foam::roughWallInput::readSwitch
     return
         deflt && !roughWallCompat::findLiteral(dict, keyword)
       ? *deflt
-      : bool(read<Switch>(dict, keyword, "true/false, on/off, yes/no", meaning));
+      : bool
+        (
+            read<Switch>(dict, keyword, "true/false, on/off, yes/no", meaning)
+        );
 }
 
 

@@ -160,7 +160,10 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
     cloudUniform01<std::remove_reference_t<decltype(rndGen)>> uniform01(rndGen);
 
     const roughWall::RoughWallReport report =
-        settings.collide<withSpin>(v, omega, n, p.d(), uniform01, emptyDirection);
+        settings.collide<withSpin>
+        (
+            v, omega, n, p.d(), uniform01, emptyDirection
+        );
 
     const scalar v1Sqr = v.squaredNorm();
     const scalar omega1Sqr = omega.squaredNorm();
@@ -304,9 +307,9 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
 
             const polyBoundaryMesh& meshPatches =
                 roughWallCompat::boundary(cloud.mesh());
-            forAll(patches_, patchi)
+            forAll(patches_, i)
             {
-                patches_[patchi].warnLateralTiltIn2D(meshPatches[patchi].name());
+                patches_[i].warnLateralTiltIn2D(meshPatches[i].name());
             }
         }
 

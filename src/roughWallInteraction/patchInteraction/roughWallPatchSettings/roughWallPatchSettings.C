@@ -84,17 +84,24 @@ Foam::roughWallPatchSettings::types[5] =
             "e",
             [](settings& s, const dictionary& d)
             {
-                s.coefficients_ = std::make_shared<const facetImpactCoefficients>
-                (
-                    d, word(s.patchName_)
-                );
+                s.coefficients_ =
+                    std::make_shared<const facetImpactCoefficients>
+                    (
+                        d, word(s.patchName_)
+                    );
                 s.rough_.material = s.coefficients_->constants();
                 s.impactDependent_ = s.coefficients_->dependsOnImpact();
             },
             ROUGHWALL_WRITE(s.coefficients_->description("e").c_str())
         },
-        {"mu0", nullptr, ROUGHWALL_WRITE(s.coefficients_->description("mu0").c_str())},
-        {"muD", nullptr, ROUGHWALL_WRITE(s.coefficients_->description("muD").c_str())},
+        {
+            "mu0", nullptr,
+            ROUGHWALL_WRITE(s.coefficients_->description("mu0").c_str())
+        },
+        {
+            "muD", nullptr,
+            ROUGHWALL_WRITE(s.coefficients_->description("muD").c_str())
+        },
         {"eArgument", nullptr, nullptr},     // read with e
         {
             "roughnessAngle",
@@ -115,17 +122,21 @@ Foam::roughWallPatchSettings::types[5] =
         },
         {
             "maxFacetCollisions",
-            ROUGHWALL_READ(rough_.maxFacetCollisions, roughWallInput::readNumber<label>
+            ROUGHWALL_READ
             (
-                d, "maxFacetCollisions",
-                {
-                    roughWall::limits::minMaxFacetCollisions,
-                    roughWall::limits::maxMaxFacetCollisions,
-                    "bound on facet collisions per wall hit before a smooth "
-                    "mean-wall rebound is applied (default: 10)"
-                },
-                roughWall::limits::defaultMaxFacetCollisions
-            )),
+                rough_.maxFacetCollisions,
+                roughWallInput::readNumber<label>
+                (
+                    d, "maxFacetCollisions",
+                    {
+                        roughWall::limits::minMaxFacetCollisions,
+                        roughWall::limits::maxMaxFacetCollisions,
+                        "bound on facet collisions per wall hit before a "
+                        "smooth mean-wall rebound is applied (default: 10)"
+                    },
+                    roughWall::limits::defaultMaxFacetCollisions
+                )
+            ),
             ROUGHWALL_WRITE(s.rough_.maxFacetCollisions)
         }
     }},
@@ -166,7 +177,8 @@ void Foam::roughWallPatchSettings::warnOutside(const scalar d) const
     if (!warnedRange_)
     {
         warnedRange_ = true;
-        const roughWall::EnvelopeAngleTable& envelope = roughness_.envelopeTable();
+        const roughWall::EnvelopeAngleTable& envelope =
+            roughness_.envelopeTable();
         WarningInFunction
             << "Patch entry " << patchName_ << ": a parcel of diameter " << d
             << " m hit the wall, outside the diameters " << envelope.dMin()
@@ -260,7 +272,8 @@ Foam::roughWallPatchSettings::readPatches
         fatalList(eptr ? "a dictionary" : "missing");
     }
 
-    const string listText = "'" + roughWallInput::entryText(coeffs, "patches") + "'";
+    const string listText =
+        "'" + roughWallInput::entryText(coeffs, "patches") + "'";
     ITstream& is = eptr->stream();
     is.rewind();
 
@@ -270,7 +283,12 @@ Foam::roughWallPatchSettings::readPatches
     {
         fatalList(listText);
     }
-    for (t = token(is); !t.isPunctuation() || t.pToken() != token::END_LIST; t = token(is))
+    for
+    (
+        t = token(is);
+        !t.isPunctuation() || t.pToken() != token::END_LIST;
+        t = token(is)
+    )
     {
         if (!t.isWord() && !t.isString())
         {
@@ -334,7 +352,10 @@ Foam::roughWallPatchSettings::readPatches
         (
             !roughWallCompat::callCatching
             (
-                [&]() { ids = roughWallCompat::matchingPatches(patches, name); },
+                [&]()
+                {
+                    ids = roughWallCompat::matchingPatches(patches, name);
+                },
                 error
             )
         )

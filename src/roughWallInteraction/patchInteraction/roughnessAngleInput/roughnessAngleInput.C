@@ -106,11 +106,11 @@ roughWall::RoughnessAngle tabulate
         );
     }
 
-    Info<< "    " << rDict.name().c_str() << ": Delta(d_p) of the rolling-sphere "
-        << "envelope of the " << source.c_str() << " tabulated at "
-        << label(envelope.rows()) << " diameters from " << envelope.dMin()
-        << " to " << envelope.dMax() << " m in " << seconds << " s CPU"
-        << endl;
+    Info<< "    " << rDict.name().c_str() << ": Delta(d_p) of the "
+        << "rolling-sphere envelope of the " << source.c_str()
+        << " tabulated at " << label(envelope.rows()) << " diameters from "
+        << envelope.dMin() << " to " << envelope.dMax() << " m in "
+        << seconds << " s CPU" << endl;
 
     return roughWall::RoughnessAngle::envelope(envelope, source);
 }
@@ -126,11 +126,15 @@ roughWall::RoughnessAngle readAngle(const dictionary& dict)
       + Foam::name(maxDeg) + "] and d >= 0 strictly increasing";
 
     const entry& e = *roughWallCompat::findLiteral(dict, "roughnessAngle");
-    const string found = "'" + roughWallInput::entryText(dict, "roughnessAngle") + "'";
+    const string found =
+        "'" + roughWallInput::entryText(dict, "roughnessAngle") + "'";
 
     auto fatal = [&](const string& what)
     {
-        roughWallInput::fatalBadEntry(dict, "roughnessAngle", allowed, angleMeaning, what);
+        roughWallInput::fatalBadEntry
+        (
+            dict, "roughnessAngle", allowed, angleMeaning, what
+        );
     };
 
     if (e.isDict())
@@ -185,7 +189,8 @@ roughWall::RoughnessAngle readProfile(const dictionary& dict)
         (
             dict, "roughness",
             "a dictionary { profile \"<file>\"; } or { Ra ...; RSm ...; }",
-            profileMeaning, "'" + roughWallInput::entryText(dict, "roughness") + "'"
+            profileMeaning,
+            "'" + roughWallInput::entryText(dict, "roughness") + "'"
         );
     }
 
@@ -253,7 +258,8 @@ roughWall::RoughnessAngle readProfile(const dictionary& dict)
         roughWall::SampledProfile trace;
         try
         {
-            trace = roughWall::levelledProfile(roughWall::readProfileFile(path));
+            trace =
+                roughWall::levelledProfile(roughWall::readProfileFile(path));
         }
         catch (const std::exception& err)
         {
@@ -348,7 +354,10 @@ roughWall::RoughnessAngle readProfile(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * * Functions  * * * * * * * * * * * * * * * //
 
-roughWall::RoughnessAngle Foam::roughnessAngleInput::read(const dictionary& dict)
+roughWall::RoughnessAngle Foam::roughnessAngleInput::read
+(
+    const dictionary& dict
+)
 {
     const bool angle = roughWallCompat::findLiteral(dict, "roughnessAngle");
     const bool profile = roughWallCompat::findLiteral(dict, "roughness");
