@@ -504,6 +504,24 @@ Options parseCommandLine(int argc, const char* const argv[])
 
     Options o;
     const auto has = [&](const char* option) { return given.count(option) > 0; };
+
+    // The output options, the same for the Delta(d) table and the statistics
+    const auto readOutputOptions = [&]()
+    {
+        if (has("--digits"))
+        {
+            o.digits = static_cast<int>(integer("--digits", given["--digits"], 1, 17));
+        }
+        if (has("--plot")) o.plotFile = given["--plot"];
+        if (has("--output")) o.outputFile = given["--output"];
+        for (const auto* option : {"--plot", "--output"})
+        {
+            if (has(option) && given[option].empty())
+            {
+                fail(std::string(option) + " needs a file name");
+            }
+        }
+    };
     if (has("--help") || has("-h"))
     {
         o.help = true;
@@ -614,19 +632,7 @@ Options parseCommandLine(int argc, const char* const argv[])
                 e.seed = seed;
             }
         }
-        if (has("--digits"))
-        {
-            o.digits = static_cast<int>(integer("--digits", given["--digits"], 1, 17));
-        }
-        if (has("--plot")) o.plotFile = given["--plot"];
-        if (has("--output")) o.outputFile = given["--output"];
-        for (const auto* option : {"--plot", "--output"})
-        {
-            if (has(option) && given[option].empty())
-            {
-                fail(std::string(option) + " needs a file name");
-            }
-        }
+        readOutputOptions();
         return o;
     }
 
@@ -851,19 +857,7 @@ Options parseCommandLine(int argc, const char* const argv[])
     {
         o.notes.push_back("--tolerance is used only by the quadrature statistics");
     }
-    if (has("--digits"))
-    {
-        o.digits = static_cast<int>(integer("--digits", given["--digits"], 1, 17));
-    }
-    if (has("--plot")) o.plotFile = given["--plot"];
-    if (has("--output")) o.outputFile = given["--output"];
-    for (const auto* option : {"--plot", "--output"})
-    {
-        if (has(option) && given[option].empty())
-        {
-            fail(std::string(option) + " needs a file name");
-        }
-    }
+    readOutputOptions();
     return o;
 }
 
