@@ -112,7 +112,19 @@ def bad_input(platform, args):
     polynomial = "polynomial (0.1 0.01)" if platform.foundation \
         else "polynomial ((0.1 0) (0.01 1))"
     table = foam_table(E_TABLE)
+    # A Catmull-Rom spline through these nodes overshoots 1 between 10 and
+    # 20 deg (e = 1 + 1/8 at 15 deg: weights (-1, 9, 9, -1)/16 at the
+    # midpoint): the nodes alone do not bound it.  v1912's table reads its
+    # values from the entry named after the function, with the type word
+    spline = "((0 0) (10 1) (20 1) (30 0))"
+    spline = ("{ type table; values %s; interpolationScheme spline; }"
+              % spline if platform.foundation else
+              "{ type table; e table %s; interpolationScheme spline; }"
+              % spline)
     cases = [
+        ("e spline table above 1 between its nodes", SETTINGS.replace(
+            "e               %s;" % table, "e               %s" % spline),
+         ["FOAM FATAL ERROR", "lowerWall|upperWall", "e = 1.", "[0, 1]"]),
         ("e table above 1", SETTINGS.replace(table, foam_table(
             [(0, 0.9), (90, 1.2)])),
          ["FOAM FATAL IO ERROR", "lowerWall|upperWall",
@@ -150,6 +162,16 @@ def bad_input(platform, args):
          ["FOAM FATAL ERROR", "lowerWall|upperWall", "muD = ",
           "at angle = ", "[0, mu0]"]),
     ]
+    if platform.foundation:
+        # outOfBounds zero (OpenFOAM-13, -14): mu0 is 0 below the table's
+        # first node, under the constant muD, which the nodes do not show
+        cases.append(
+            ("mu0 table zero below its nodes, under muD", SETTINGS.replace(
+                "mu0             0.4;",
+                "mu0             { type table; values ((20 0.4) (90 0.4)); "
+                "outOfBounds zero; }").replace(foam_table(MUD_TABLE), "0.2"),
+             ["FOAM FATAL ERROR", "lowerWall|upperWall", "muD = 0.2",
+              "[0, mu0]"]))
     for i, (name, text, expected) in enumerate(cases):
         t.check(text != SETTINGS, "%s: the settings were changed" % name)
         case.write_settings(text)

@@ -179,16 +179,30 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
     }
 
     // Tables: the bounds at their nodes (linear in between, constant
-    // beyond the ends); constants: at one argument. Anything else: at every
-    // call
+    // beyond the ends); constants: at one argument. Anything else (a spline
+    // table too): at every call
     std::vector<double> nodes[3];
     const autoPtr<Function1<scalar>>* functions[3] = {&e_, &mu0_, &muD_};
+    const word names[3] =
+    {
+        "e", "mu0", roughWallCompat::findLiteral(dict, "muD") ? "muD" : "mu0"
+    };
     for (int i = 0; i < 3; ++i)
     {
         if (functions[i]->valid())
         {
+            // Where the function read its settings: its own sub-dictionary,
+            // or the entry (ESI's inline table)
+            const dictionary& coeffs =
+                dict.isDict(names[i]) ? dict.subDict(names[i]) : dict;
             tmp<scalarField> x;
-            if (roughWallCompat::startupCheckNodes((*functions[i])(), x))
+            if
+            (
+                roughWallCompat::startupCheckNodes
+                (
+                    (*functions[i])(), coeffs, x
+                )
+            )
             {
                 nodes[i].assign(x().begin(), x().end());
             }
