@@ -255,6 +255,14 @@ def test():
     rc, _ = case.solve("log.rebound", check_rc=False)
     t.check(rc == 0, "control: rebound on the outlet runs (rc %d)" % rc)
     t.check_summary(case, "log.rebound", ["outlet: rebound: e = 1, mu = 0.2"])
+    # v1912 counts a hit on a patch that is not a wall as an escape before
+    # the model sees it: a rebound outlet is warned of there, and only there
+    kept = ("Patches 1(outlet) are not of type wall but keep the parcels "
+            "that hit them")
+    t.check((kept in case.log("log.rebound")) == (not platform.foundation),
+            "control: the warning '%s...' %s" % (
+                kept, "absent (Foundation)" if platform.foundation
+                else "given (v1912)"))
 
     # Control: writeToFile false writes no statistics file
     stats_dir = case.file("postProcessing")
@@ -272,11 +280,16 @@ def test():
     # earlier one and is warned of; before 2026-11-27 it was ignored
     # without a message
     case.write_settings(settings(outlet="lowerWall { type stick; }\n"
+                                 "        lowerWal { type stick; }\n"
                                  "        outlet { type escape; }"))
     rc, _ = case.solve("log.neverApplied", check_rc=False)
     out = case.log("log.neverApplied")
     warning = ("The patches entry lowerWall is never applied: every patch "
                "it matches (lowerWall) takes an earlier entry")
+    # An entry that matches no patch at all (a typo) is warned of too
+    typo = "No patch matches the patches entry lowerWal"
+    t.check(typo in out, "control: an entry matching no patch is warned of "
+            "('%s')" % typo)
     t.check(rc == 0 and warning in out
             and "lowerWall: rough" in out and "stick" not in out.split(
                 "Patch interactions:")[-1].split("outlet:")[0],

@@ -129,6 +129,11 @@ def test():
         t.set_wall_velocity(case, args.wallVelocity)
     case.mesh(args.np)
     case.solve()
+    # The compile-time choice of spin, as the log states it (fc.SPIN: the
+    # test's own table of the clouds whose parcels carry angularMomentum)
+    carries = ("Rough-wall parcels carry spin: "
+               + ("yes (angularMomentum)" if spin else "no"))
+    t.check(carries in case.log(), "the log says '%s'" % carries)
     if args.profile:
         t.check(bool(re.search(r"roughness: Delta\(d_p\) of the rolling-sphere "
                                r"envelope of the profile \S*wallProfile "
