@@ -19,6 +19,7 @@ SPDX-License-Identifier: GPL-3.0-or-later
 import argparse
 import math
 import os
+import re
 
 import numpy as np
 
@@ -36,9 +37,9 @@ def parse_args():
 def test():
     args = parse_args()
     n = args.parcels
-    case = t.wall_impact_case(fc.Platform(args.platform),
-                              os.path.join(args.work, "case"), args.cloud,
-                              parcels=n)
+    platform = fc.Platform(args.platform)
+    case = t.wall_impact_case(platform, os.path.join(args.work, "case"),
+                              args.cloud, parcels=n)
     case.mesh()
 
     case.set_control(endTime="0.025", writeInterval="25")
@@ -80,6 +81,87 @@ def test():
     t.check(abs(last["lowerWall_meanKt"] - kt.mean()) < 1e-8,
             "restart: meanKt %.10g = all parcels' %.10g"
             % (last["lowerWall_meanKt"], kt.mean()))
+
+    renamed_restart(args, platform, n)
+
+
+def rename_patches(boundary, new_names):
+    """constant/polyMesh/boundary with the patches renamed (old: new)."""
+    text = fc.read_text(boundary)
+    names = re.compile(r"^(\s*)(%s)(\s*)$" % "|".join(new_names), re.M)
+    renamed, count = names.subn(
+        lambda m: m.group(1) + new_names[m.group(2)] + m.group(3), text)
+    with open(boundary, "w") as f:
+        f.write(renamed)
+    return count
+
+
+def renamed_restart(args, platform, n):
+    """The same restart with lowerWall and upperWall renamed into each other
+    in the mesh between the runs (the same number of patches): the stored
+    totals follow the names.  The wall that was lowerWall, hit by every
+    parcel, is now upperWall; lowerWall (the old upper wall) is hit by
+    none.  So lowerWall keeps the first run's totals and upperWall counts
+    the n parcels of the second run only.  Placed by index, as before
+    2026-11-27, upperWall would show 3n hits and lowerWall none.  Then a
+    patch renamed to a new name: its stored totals are dropped, warned."""
+    case = t.wall_impact_case(platform, os.path.join(args.work, "renamed"),
+                              args.cloud, parcels=n)
+    case.mesh()
+    case.set_control(endTime="0.025", writeInterval="25")
+    case.solve("log.run1")
+    _, rows1 = case.read_statistics()
+    first = rows1[-1]
+    boundary = case.file("constant/polyMesh/boundary")
+    t.check(rename_patches(boundary, {"lowerWall": "upperWall",
+                                      "upperWall": "lowerWall"}) == 2,
+            "renamed: lowerWall and upperWall exchanged in the mesh")
+
+    case.set_control(endTime="0.05")
+    rc, _ = case.solve("log.run2", check_rc=False)
+    t.check(rc == 0, "renamed: the restart runs (rc %d)" % rc)
+    _, rows = case.read_statistics()
+    last = rows[-1]
+    t.check(last["lowerWall_hits"] == 2 * n
+            and last["lowerWall_meanKn"] == first["lowerWall_meanKn"],
+            "renamed: lowerWall keeps the first run's %d hits and mean k_n "
+            "(%d, %.12g vs %.12g)" % (2 * n, last["lowerWall_hits"],
+                                      last["lowerWall_meanKn"],
+                                      first["lowerWall_meanKn"]))
+    t.check(last["upperWall_hits"] == n,
+            "renamed: upperWall counts the second run's %d hits only (%d)"
+            % (n, last["upperWall_hits"]))
+    t.check("stored statistics" not in case.log("log.run2"),
+            "renamed: no stored statistics ignored or dropped")
+
+    # Then lowerWall renamed floorWall (the entry's expression with it):
+    # its stored totals have no patch left and are dropped, with a warning
+    # naming it, once; floorWall starts from zero, upperWall goes on
+    rename_patches(boundary, {"lowerWall": "floorWall"})
+    for time_dir in ("0", "0.05"):      # v1912 writes the carrier fields
+        folder = case.file(time_dir)
+        for name in os.listdir(folder):
+            path = os.path.join(folder, name)
+            if os.path.isfile(path):
+                text = fc.read_text(path)
+                with open(path, "w") as f:
+                    f.write(re.sub(r"\blowerWall\b", "floorWall", text))
+    case.write_settings(t.DEFAULT_SETTINGS.replace(
+        "(lowerWall|upperWall)", "(floorWall|upperWall)"))
+    case.set_control(endTime="0.075")
+    rc, _ = case.solve("log.run3", check_rc=False)
+    out = case.log("log.run3")
+    warning = ("Dropping the stored statistics of patches not in this "
+               "mesh: 1(lowerWall)")
+    t.check(rc == 0 and out.count(warning) == 1,
+            "dropped: the run (rc %d) warns once '%s' (%d times)"
+            % (rc, warning, out.count(warning)))
+    _, rows = case.read_statistics()
+    last = rows[-1]
+    t.check(last["floorWall_hits"] == 0 and last["upperWall_hits"] == n,
+            "dropped: floorWall starts from 0 hits (%d), upperWall goes on "
+            "from %d (%d)" % (last["floorWall_hits"], n,
+                              last["upperWall_hits"]))
 
 
 if __name__ == "__main__":

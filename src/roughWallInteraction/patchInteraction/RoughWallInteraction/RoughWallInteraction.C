@@ -287,7 +287,8 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
     stats_(roughWallCompat::boundary(cloud.mesh())),
     file_(),
     wallSpeedSqr_(stats_.nPatches(), scalar(-1)),
-    wallSpeedSqrReported_(stats_.nPatches(), scalar(-1))
+    wallSpeedSqrReported_(stats_.nPatches(), scalar(-1)),
+    warnedStored_(false)
 {
     bool anyRough = false;
     for (const roughWallPatchSettings& settings : patches_)
@@ -363,7 +364,8 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
     stats_(pim.stats_),
     file_(),
     wallSpeedSqr_(pim.wallSpeedSqr_),
-    wallSpeedSqrReported_(pim.wallSpeedSqrReported_)
+    wallSpeedSqrReported_(pim.wallSpeedSqrReported_),
+    warnedStored_(pim.warnedStored_)
 {}
 
 
@@ -428,13 +430,11 @@ void Foam::RoughWallInteraction<CloudType>::info(ROUGHWALL_INFO_PARAMETERS)
     PatchInteractionModel<CloudType>::info(ROUGHWALL_INFO_ARGUMENTS);
 
     // This run's counters of all processors plus the totals stored at the
-    // last write time (restart)
+    // last write time (restart), each patch's by its name
     roughWallStatistics total(stats_.reduced());
     {
         roughWallStatistics stored(stats_);
         stored.reset();
-        const label nCounts = stored.counts().size();
-        const label nSums = stored.sums().size();
 
         this->getModelProperty("counts", stored.counts());
         stringList exact;
@@ -448,20 +448,30 @@ void Foam::RoughWallInteraction<CloudType>::info(ROUGHWALL_INFO_PARAMETERS)
         {
             stored.sums().clear();
         }
+        wordList names;
+        this->getModelProperty("patches", names);
 
-        if
-        (
-            stored.counts().size() == nCounts
-         && stored.sums().size() == nSums
-        )
+        DynamicList<word> dropped;
+        const bool placed = stored.placeByName(names, dropped);
+        if (placed)
         {
             total += stored;
         }
-        else
+
+        // Once per run: the stored totals are read at every step
+        if (!warnedStored_ && (!placed || dropped.size()))
         {
+            warnedStored_ = true;
             WarningInFunction
-                << "Ignoring stored statistics of a different patch layout"
-                << endl;
+                << (
+                       placed
+                     ? "Dropping the stored statistics of patches not in "
+                       "this mesh: "
+                     : "Ignoring the stored statistics: they do not fit "
+                       "their patch names, or (older restart files without "
+                       "names) this mesh's patches "
+                   )
+                << dropped << endl;
         }
     }
 
@@ -479,6 +489,7 @@ void Foam::RoughWallInteraction<CloudType>::info(ROUGHWALL_INFO_PARAMETERS)
     {
         this->setModelProperty("counts", total.counts());
         this->setModelProperty("exactSums", total.exactSums());
+        this->setModelProperty("patches", total.patchNames());
         stats_.reset();
     }
 }

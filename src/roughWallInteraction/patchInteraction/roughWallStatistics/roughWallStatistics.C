@@ -35,6 +35,7 @@ License
 #include "OSspecific.H"
 #include "roughWallLimits.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
@@ -267,11 +268,6 @@ Foam::stringList Foam::roughWallStatistics::exactSums() const
 
 bool Foam::roughWallStatistics::setExactSums(const stringList& text)
 {
-    if (text.size() != sums_.size())
-    {
-        return false;
-    }
-
     scalarList values(text.size());
     forAll(text, i)
     {
@@ -283,6 +279,54 @@ bool Foam::roughWallStatistics::setExactSums(const stringList& text)
         }
     }
     sums_ = values;
+    return true;
+}
+
+
+bool Foam::roughWallStatistics::placeByName
+(
+    const wordList& names,
+    DynamicList<word>& dropped
+)
+{
+    // Without names the stored lists are taken as this layout
+    const label nStored = names.empty() ? nPatches_ : names.size();
+    if
+    (
+        counts_.size() != nStored*nCountTypes
+     || sums_.size() != nStored*nSumTypes
+    )
+    {
+        return false;
+    }
+    if (names.empty())
+    {
+        return true;
+    }
+
+    labelList counts(nPatches_*nCountTypes, label(0));
+    scalarList sums(nPatches_*nSumTypes, scalar(0));
+    forAll(names, storedi)
+    {
+        const label patchi =
+            std::find(patchNames_.begin(), patchNames_.end(), names[storedi])
+          - patchNames_.begin();
+        if (patchi == nPatches_)
+        {
+            dropped.append(names[storedi]);
+            continue;
+        }
+        for (label c = 0; c < nCountTypes; ++c)
+        {
+            counts[patchi*nCountTypes + c] = counts_[storedi*nCountTypes + c];
+        }
+        for (label s = 0; s < nSumTypes; ++s)
+        {
+            sums[patchi*nSumTypes + s] = sums_[storedi*nSumTypes + s];
+        }
+    }
+    counts_.transfer(counts);
+    sums_.transfer(sums);
     return true;
 }
 
