@@ -17,6 +17,7 @@ SPDX-License-Identifier: GPL-3.0-or-later
 """
 
 import argparse
+import glob
 import math
 import os
 import re
@@ -83,6 +84,45 @@ def test():
             % (last["lowerWall_meanKt"], kt.mean()))
 
     renamed_restart(args, platform, n)
+    large_count_restart(args, platform, n)
+
+
+def large_count_restart(args, platform, n):
+    """Counters beyond a 32-bit label: the stored lowerWall hits set to
+    2^31 - 48 before the restart; the n hits of the second run must take
+    the total to 2^31 - 48 + n exactly (a 32-bit counter would wrap to a
+    negative number), and a second restart reads that total back."""
+    case = t.wall_impact_case(platform, os.path.join(args.work, "large"),
+                              args.cloud, parcels=n)
+    case.mesh()
+    case.set_control(endTime="0.025", writeInterval="25")
+    case.solve("log.run1")
+    stored = 2**31 - 48
+    paths = glob.glob(case.file("0.025/uniform/lagrangian/*/*OutputProperties"))
+    t.check(len(paths) == 1, "large: one cloud properties file (%s)" % paths)
+    text = fc.read_text(paths[0])
+    # exactCounts: the first counter is lowerWall's hits (2n after the
+    # first run), as text
+    edited, k = re.subn(r'(exactCounts\s+\d+\s*\(\s*)"%d"' % (2 * n),
+                        lambda m: m.group(1) + '"%d"' % stored, text)
+    t.check(k == 1, "large: lowerWall's stored hits set to %d" % stored)
+    with open(paths[0], "w") as f:
+        f.write(edited)
+    case.set_control(endTime="0.05")
+    rc, _ = case.solve("log.run2", check_rc=False)
+    _, rows = case.read_statistics()
+    hits = rows[-1]["lowerWall_hits"]
+    t.check(rc == 0 and hits == stored + n,
+            "large: the restart counts on past 2^31 - 1: %d + %d = %d (%d)"
+            % (stored, n, stored + n, hits))
+    # and stores it: a second restart, from 0.05, goes on from that total
+    case.set_control(endTime="0.075")
+    rc, _ = case.solve("log.run3", check_rc=False)
+    _, rows = case.read_statistics()
+    hits = rows[-1]["lowerWall_hits"]
+    t.check(rc == 0 and hits == stored + n,
+            "large: a second restart reads the stored %d back (%d)"
+            % (stored + n, hits))
 
 
 def rename_patches(boundary, new_names):

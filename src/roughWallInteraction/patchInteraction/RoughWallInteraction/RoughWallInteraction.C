@@ -436,7 +436,23 @@ void Foam::RoughWallInteraction<CloudType>::info(ROUGHWALL_INFO_PARAMETERS)
         roughWallStatistics stored(stats_);
         stored.reset();
 
-        this->getModelProperty("counts", stored.counts());
+        stringList exactCounts;
+        this->getModelProperty("exactCounts", exactCounts);
+        if (exactCounts.empty())
+        {
+            // Restart files written before the counters had 64 bits
+            labelList counts;
+            this->getModelProperty("counts", counts);
+            stored.counts().setSize(counts.size());
+            forAll(counts, i)
+            {
+                stored.counts()[i] = counts[i];
+            }
+        }
+        else if (!stored.setExactCounts(exactCounts))
+        {
+            stored.counts().clear();
+        }
         stringList exact;
         this->getModelProperty("exactSums", exact);
         if (exact.empty())
@@ -487,7 +503,7 @@ void Foam::RoughWallInteraction<CloudType>::info(ROUGHWALL_INFO_PARAMETERS)
 
     if (this->writeTime())
     {
-        this->setModelProperty("counts", total.counts());
+        this->setModelProperty("exactCounts", total.exactCounts());
         this->setModelProperty("exactSums", total.exactSums());
         this->setModelProperty("patches", total.patchNames());
         stats_.reset();

@@ -36,6 +36,7 @@ License
 #include "roughWallLimits.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 
@@ -60,7 +61,7 @@ Foam::roughWallStatistics::roughWallStatistics
         ++nPatches_;
     }
     patchNames_.setSize(nPatches_);
-    counts_.setSize(nPatches_*nCountTypes, 0);
+    counts_.setSize(nPatches_*nCountTypes, int64_t(0));
     sums_.setSize(nPatches_*nSumTypes, 0);
 }
 
@@ -104,7 +105,7 @@ void Foam::roughWallStatistics::operator+=(const roughWallStatistics& other)
 
 void Foam::roughWallStatistics::reset()
 {
-    counts_ = Zero;
+    counts_ = int64_t(0);
     sums_ = Zero;
 }
 
@@ -252,6 +253,35 @@ Foam::roughWallStatistics::report
 }
 
 
+Foam::stringList Foam::roughWallStatistics::exactCounts() const
+{
+    stringList text(counts_.size());
+    forAll(counts_, i)
+    {
+        text[i] = std::to_string(counts_[i]);
+    }
+    return text;
+}
+
+
+bool Foam::roughWallStatistics::setExactCounts(const stringList& text)
+{
+    List<int64_t> values(text.size());
+    forAll(text, i)
+    {
+        char* end = nullptr;
+        errno = 0;
+        values[i] = std::strtoll(text[i].c_str(), &end, 10);
+        if (end == text[i].c_str() || *end != '\0' || errno == ERANGE)
+        {
+            return false;
+        }
+    }
+    counts_ = values;
+    return true;
+}
+
+
 Foam::stringList Foam::roughWallStatistics::exactSums() const
 {
     // 17 significant digits: the shortest that gives back every double
@@ -304,7 +334,7 @@ bool Foam::roughWallStatistics::placeByName
         return true;
     }
 
-    labelList counts(nPatches_*nCountTypes, label(0));
+    List<int64_t> counts(nPatches_*nCountTypes, int64_t(0));
     scalarList sums(nPatches_*nSumTypes, scalar(0));
     forAll(names, storedi)
     {
@@ -435,12 +465,21 @@ void Foam::roughWallStatistics::write
                 const scalar v = line.values[i];
                 log << (i ? ", " : "");
                 const bool isCount = i < line.nCounts;
-                if (isCount) log << label(v); else log << v;
+                // (a count as text: v1912 writes an int64_t as a label)
+                if (isCount) log << std::to_string(int64_t(v)).c_str();
+                else log << v;
 
                 if (file)
                 {
                     *file << tab;
-                    if (isCount) *file << label(v); else *file << v;
+                    if (isCount)
+                    {
+                        *file << std::to_string(int64_t(v)).c_str();
+                    }
+                    else
+                    {
+                        *file << v;
+                    }
                 }
             }
             log << nl;
