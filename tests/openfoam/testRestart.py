@@ -108,21 +108,18 @@ def large_count_restart(args, platform, n):
     t.check(k == 1, "large: lowerWall's stored hits set to %d" % stored)
     with open(paths[0], "w") as f:
         f.write(edited)
-    case.set_control(endTime="0.05")
-    rc, _ = case.solve("log.run2", check_rc=False)
-    _, rows = case.read_statistics()
-    hits = rows[-1]["lowerWall_hits"]
-    t.check(rc == 0 and hits == stored + n,
-            "large: the restart counts on past 2^31 - 1: %d + %d = %d (%d)"
-            % (stored, n, stored + n, hits))
-    # and stores it: a second restart, from 0.05, goes on from that total
-    case.set_control(endTime="0.075")
-    rc, _ = case.solve("log.run3", check_rc=False)
-    _, rows = case.read_statistics()
-    hits = rows[-1]["lowerWall_hits"]
-    t.check(rc == 0 and hits == stored + n,
-            "large: a second restart reads the stored %d back (%d)"
-            % (stored + n, hits))
+    # The restart counts on; a second restart, from 0.05, reads it back
+    for end, log, what in (("0.05", "log.run2", "the restart counts on past "
+                            "2^31 - 1 to"),
+                           ("0.075", "log.run3", "a second restart reads "
+                            "back")):
+        case.set_control(endTime=end)
+        rc, _ = case.solve(log, check_rc=False)
+        _, rows = case.read_statistics()
+        hits = rows[-1]["lowerWall_hits"]
+        t.check(rc == 0 and hits == stored + n,
+                "large: %s %d + %d = %d (%d)"
+                % (what, stored, n, stored + n, hits))
 
 
 def rename_patches(boundary, new_names):
