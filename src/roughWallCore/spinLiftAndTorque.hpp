@@ -74,6 +74,15 @@ enum class TorqueCoefficient
 //- Largest particle Reynolds number of Oesterle & Bui Dinh's fit
 constexpr double oesterleBuiDinhMaxRe = 140;
 
+//- The rest of their measured range: 10 < Re_p, 1 < Gamma < 6, with
+//  Gamma = |Omega| d/(2 |U|) = Omega*/2
+constexpr double oesterleBuiDinhMinRe = 10;
+constexpr double oesterleBuiDinhMinGamma = 1;
+constexpr double oesterleBuiDinhMaxGamma = 6;
+
+//- Rubinow & Keller's theory is for Re_p << 1: counted as in range below 1
+constexpr double rubinowKellerMaxRe = 1;
+
 //- Range of Loth's correlation: Re_p < 2000, Omega* = Re_R/Re_p < 20
 constexpr double lothMaxRe = 2000;
 constexpr double lothMaxSpinRatio = 20;
@@ -198,6 +207,39 @@ inline double liftCoefficientLoth(const double Rep, const double ReR)
 {
     const double spinRatio = ReR/Rep;
     return spinRatio*lothFactor(spinRatio, Rep);
+}
+
+//- Is a lift evaluation at Re_p and spin ratio Omega* = Re_R/Re_p
+//  (= |Omega| d/|U| = 2 Gamma) inside the range the correlation was
+//  derived or measured for?
+inline bool liftInRange(const LiftCoefficient c, const double Rep, const double spinRatio)
+{
+    switch (c)
+    {
+        case LiftCoefficient::RubinowKeller:
+            return Rep < rubinowKellerMaxRe;
+        case LiftCoefficient::Loth:
+            return Rep < lothMaxRe && spinRatio < lothMaxSpinRatio;
+        default:
+            return
+                Rep > oesterleBuiDinhMinRe && Rep < oesterleBuiDinhMaxRe
+             && spinRatio > 2*oesterleBuiDinhMinGamma
+             && spinRatio < 2*oesterleBuiDinhMaxGamma;
+    }
+}
+
+//- That range as text, for the log
+inline const char* liftRange(const LiftCoefficient c)
+{
+    switch (c)
+    {
+        case LiftCoefficient::RubinowKeller:
+            return "Re_p < 1 (derived for Re_p << 1)";
+        case LiftCoefficient::Loth:
+            return "Re_p < 2000, Omega* = Re_R/Re_p < 20";
+        default:
+            return "10 < Re_p < 140, 1 < Gamma = Re_R/(2 Re_p) < 6";
+    }
 }
 
 //- C_LR of a named choice (Re_p, Re_R > 0)

@@ -47,7 +47,9 @@ Foam::RotationalLiftForce<CloudType>::RotationalLiftForce
     ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
     coefficient_(roughWall::spin::LiftCoefficient::OesterleBuiDinh),
     vorticityPtr_(),
-    vorticityInterpPtr_()
+    vorticityInterpPtr_(),
+    nEvaluations_(0),
+    nOutside_(0)
 {
     if constexpr (!withSpin)
     {
@@ -76,7 +78,9 @@ Foam::RotationalLiftForce<CloudType>::RotationalLiftForce
     ParticleForce<CloudType>(lf),
     coefficient_(lf.coefficient_),
     vorticityPtr_(),
-    vorticityInterpPtr_()
+    vorticityInterpPtr_(),
+    nEvaluations_(0),
+    nOutside_(0)
 {}
 
 
@@ -90,6 +94,18 @@ void Foam::RotationalLiftForce<CloudType>::cacheFields(const bool store)
 
     if (!store)
     {
+        // The end of an evolve: how much of it the correlation covered
+        // (model notes: a correlation outside its range says so)
+        label n = nEvaluations_;
+        label nOut = nOutside_;
+        reduce(n, sumOp<label>());
+        reduce(nOut, sumOp<label>());
+        Info<< "    rotationalLift (" << spinModelInput::name(coefficient_).c_str()
+            << "): " << nOut << " of " << n << " evaluations outside the "
+            << "correlation's range (" << roughWall::spin::liftRange(coefficient_)
+            << ")" << endl;
+        nEvaluations_ = 0;
+        nOutside_ = 0;
         return;
     }
 
@@ -150,19 +166,40 @@ Foam::forceSuSp Foam::RotationalLiftForce<CloudType>::calcCoupled
                 );
 
             const scalar rhoc = td.rhoc();
+            const vector slipU = td.Uc() - p.U();
+            const vector slipOmega = vorticity - p.angularMomentum()/I;
 
             value.Su() = roughWallCompat::toFoam
             (
                 roughWall::spin::rotationalLift
                 (
-                    toCore(td.Uc() - p.U()),
-                    toCore(vorticity - p.angularMomentum()/I),
+                    toCore(slipU),
+                    toCore(slipOmega),
                     p.d(),
                     rhoc,
                     muc/rhoc,
                     coefficient_
                 )
             );
+
+            // Every evaluation with a force, against the range: Re_p the
+            // cloud's (Re), the spin ratio Omega* = |Omega_rel| d/|U_rel|
+            const scalar magSlipU = mag(slipU);
+            const scalar magSlipOmega = mag(slipOmega);
+            if (magSlipU > 0 && magSlipOmega > 0)
+            {
+                ++nEvaluations_;
+                if
+                (
+                    !roughWall::spin::liftInRange
+                    (
+                        coefficient_, Re, magSlipOmega*p.d()/magSlipU
+                    )
+                )
+                {
+                    ++nOutside_;
+                }
+            }
         }
     }
 
