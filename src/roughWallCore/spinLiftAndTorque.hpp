@@ -353,6 +353,22 @@ inline double torqueCoefficientDennisSinghIngham(const double ReR)
     return 12.9/std::sqrt(ReR) + 128.4/ReR;
 }
 
+//- Is a torque evaluation at Re_R inside the range of its coefficient?
+//  Stokes: Re_R <= 32, where Dennis, Singh & Ingham's computations follow
+//  it; DennisSinghIngham: Re_R <= 1000, their computations
+inline bool torqueInRange(const TorqueCoefficient c, const double ReR)
+{
+    return ReR <= (c == TorqueCoefficient::Stokes ? dennisStokesMaxReR : dennisMaxReR);
+}
+
+//- That range as text, for the log
+inline const char* torqueRange(const TorqueCoefficient c)
+{
+    return c == TorqueCoefficient::Stokes
+        ? "Re_R <= 32, where Dennis, Singh & Ingham follow Stokes"
+        : "Re_R <= 1000, Dennis, Singh & Ingham's computations";
+}
+
 //- C_R of a named choice (Re_R > 0)
 inline double torqueCoefficient(const TorqueCoefficient c, const double ReR)
 {

@@ -201,6 +201,13 @@ def lift_run(args, platform, coefficient):
 # Torque
 # ---------------------------------------------------------------------------
 
+def torque_range_counts(log):
+    """(outside, evaluations) of every step's fluidTorque range line."""
+    return [(int(a), int(b)) for a, b in re.findall(
+        r"fluidTorque \(DennisSinghIngham\): (\d+) of (\d+) evaluations "
+        r"outside the correlation's range", log)]
+
+
 def torque_still_air(args, platform):
     steps, dt = 200, 0.01
     parcels = [dict(d=d, position=x) for d, x, _ in TORQUE_PARCELS]
@@ -217,6 +224,15 @@ def torque_still_air(args, platform):
     t.check("fluidTorque: coefficient DennisSinghIngham"
             in case.log("log.stillAir.2"),
             "%s: the log names the coefficient" % tag)
+    # The first step with spin: the parcels out of Dennis, Singh & Ingham's
+    # computed range (Re_R > 1000, the test's own Re_R of each parcel)
+    out = sum(np.linalg.norm(w) * d * d / s.NU_F > 1000
+              for d, _, w in TORQUE_PARCELS)
+    counts = torque_range_counts(case.log("log.stillAir.2"))
+    t.check(out == 1 and len(counts) > 0 and counts[0][1] > 0
+            and counts[0][0] * len(TORQUE_PARCELS) == counts[0][1] * out,
+            "%s: the log's first step has %d of %d parcels outside Re_R <= "
+            "1000 (%s)" % (tag, out, len(TORQUE_PARCELS), counts[:1]))
 
     s.check_processors(case, last, tag)
     first = s.parcels_by_diameter(case, first_name, spins)
@@ -269,6 +285,11 @@ def torque_rotating_fluid(args, platform):
     case.solve("log.rotating")
     last = fc.time_dirs(case.path)[-1][1]
     tag = "%s, fluid rotating at %g rad/s" % (label(args), OMEGA_F)
+    # Slip spin OMEGA_F at most: Re_R <= 5 d^2/nu = 3 for 3 mm, in range
+    counts = torque_range_counts(case.log("log.rotating"))
+    t.check(len(counts) > 0 and all(a == 0 and b > 0 for a, b in counts),
+            "%s: every step's log has no evaluation outside the range "
+            "(%d steps, first %s)" % (tag, len(counts), counts[:1]))
     s.check_processors(case, last, tag)
     final = s.parcels_by_diameter(case, last, [p[0] for p in TORQUE_PARCELS],
                                   ("U", "d", "angularMomentum", "age"))

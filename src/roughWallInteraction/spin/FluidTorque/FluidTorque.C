@@ -61,7 +61,9 @@ Foam::FluidTorque<CloudType>::FluidTorque
     vorticityPtr_(),
     vorticityInterpPtr_(),
     rhoInterpPtr_(),
-    muInterpPtr_()
+    muInterpPtr_(),
+    nEvaluations_(0),
+    nOutside_(0)
 {
     if constexpr (!withSpin)
     {
@@ -92,7 +94,9 @@ Foam::FluidTorque<CloudType>::FluidTorque
     vorticityPtr_(),
     vorticityInterpPtr_(),
     rhoInterpPtr_(),
-    muInterpPtr_()
+    muInterpPtr_(),
+    nEvaluations_(0),
+    nOutside_(0)
 {}
 
 
@@ -143,8 +147,21 @@ void Foam::FluidTorque<CloudType>::preEvolve(ROUGHWALL_EVOLVE_PARAMETERS)
 template<class CloudType>
 void Foam::FluidTorque<CloudType>::postEvolve(ROUGHWALL_EVOLVE_PARAMETERS)
 {
-    // No output (the base class would call write() at write times)
+    // No file output (the base class would call write() at write
+    // times); the log says how much of the evolve the coefficient covered
+    // (model notes: a correlation outside its range says so)
     clearFields();
+
+    label n = nEvaluations_;
+    label nOut = nOutside_;
+    reduce(n, sumOp<label>());
+    reduce(nOut, sumOp<label>());
+    Info<< "    fluidTorque (" << spinModelInput::name(coefficient_).c_str()
+        << "): " << nOut << " of " << n << " evaluations outside the "
+        << "correlation's range (" << roughWall::spin::torqueRange(coefficient_)
+        << ")" << endl;
+    nEvaluations_ = 0;
+    nOutside_ = 0;
 }
 
 
@@ -179,10 +196,33 @@ ROUGHWALL_POST_MOVE_RESULT Foam::FluidTorque<CloudType>::postMove
         const scalar muc = muInterpPtr_->interpolate(p.coordinates(), tetIs);
 
         const vector slip = vorticity - p.angularMomentum()/I;
+        const scalar magSlip =
+            roughWall::spin::magnitude(roughWallCompat::toCore(slip));
+
+        // Every evaluation with a slip spin, against the range (at the
+        // start of the step)
+        if (magSlip > 0)
+        {
+            ++nEvaluations_;
+            if
+            (
+                !roughWall::spin::torqueInRange
+                (
+                    coefficient_,
+                    roughWall::spin::rotationalReynolds
+                    (
+                        magSlip, p.d(), muc/rhoc
+                    )
+                )
+            )
+            {
+                ++nOutside_;
+            }
+        }
 
         const scalar decay = roughWall::spin::slipSpinDecay
         (
-            roughWall::spin::magnitude(roughWallCompat::toCore(slip)),
+            magSlip,
             dt,
             p.d(),
             p.rho(),
