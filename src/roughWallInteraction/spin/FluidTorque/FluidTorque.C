@@ -152,16 +152,11 @@ void Foam::FluidTorque<CloudType>::postEvolve(ROUGHWALL_EVOLVE_PARAMETERS)
     // (model notes: a correlation outside its range says so)
     clearFields();
 
-    label n = nEvaluations_;
-    label nOut = nOutside_;
-    reduce(n, sumOp<label>());
-    reduce(nOut, sumOp<label>());
-    Info<< "    fluidTorque (" << spinModelInput::name(coefficient_).c_str()
-        << "): " << nOut << " of " << n << " evaluations outside the "
-        << "correlation's range (" << roughWall::spin::torqueRange(coefficient_)
-        << ")" << endl;
-    nEvaluations_ = 0;
-    nOutside_ = 0;
+    spinModelInput::reportOutsideRange
+    (
+        "fluidTorque", spinModelInput::name(coefficient_),
+        roughWall::spin::torqueRange(coefficient_), nEvaluations_, nOutside_
+    );
 }
 
 

@@ -96,16 +96,12 @@ void Foam::RotationalLiftForce<CloudType>::cacheFields(const bool store)
     {
         // The end of an evolve: how much of it the correlation covered
         // (model notes: a correlation outside its range says so)
-        label n = nEvaluations_;
-        label nOut = nOutside_;
-        reduce(n, sumOp<label>());
-        reduce(nOut, sumOp<label>());
-        Info<< "    rotationalLift (" << spinModelInput::name(coefficient_).c_str()
-            << "): " << nOut << " of " << n << " evaluations outside the "
-            << "correlation's range (" << roughWall::spin::liftRange(coefficient_)
-            << ")" << endl;
-        nEvaluations_ = 0;
-        nOutside_ = 0;
+        spinModelInput::reportOutsideRange
+        (
+            "rotationalLift", spinModelInput::name(coefficient_),
+            roughWall::spin::liftRange(coefficient_), nEvaluations_,
+            nOutside_
+        );
         return;
     }
 

@@ -130,4 +130,23 @@ void Foam::spinModelInput::fatalNoSpin
 }
 
 
+void Foam::spinModelInput::reportOutsideRange
+(
+    const char* model,
+    const word& coefficient,
+    const char* range,
+    label& nEvaluations,
+    label& nOutside
+)
+{
+    reduce(nEvaluations, sumOp<label>());
+    reduce(nOutside, sumOp<label>());
+    Info<< "    " << model << " (" << coefficient.c_str() << "): " << nOutside
+        << " of " << nEvaluations << " evaluations outside the correlation's"
+        << " range (" << range << ")" << endl;
+    nEvaluations = 0;
+    nOutside = 0;
+}
+
+
 // ************************************************************************* //
