@@ -45,6 +45,8 @@ def test():
 
     case.set_control(endTime="0.025", writeInterval="25")
     case.solve("log.run1")
+    t.check("stored statistics" not in case.log("log.run1"),
+            "first run: nothing stored, nothing ignored or dropped")
     _, rows1 = case.read_statistics()
     hits1 = fc.column(rows1[-1], "lowerWall_hits")
     t.check(hits1 == 2 * n,

@@ -247,6 +247,74 @@ void Foam::RoughWallInteraction<CloudType>::reportWallVelocity(Ostream& os)
 
 
 template<class CloudType>
+void Foam::RoughWallInteraction<CloudType>::readStored()
+{
+    // The totals stored at the last write time (restart), each patch's by
+    // its name; read once: they change only at this run's write times
+    roughWallStatistics& stored = stored_;
+
+    stringList exactCounts;
+    this->getModelProperty("exactCounts", exactCounts);
+    labelList counts;
+    if (exactCounts.empty())
+    {
+        // Restart files written before the counters had 64 bits
+        this->getModelProperty("counts", counts);
+    }
+    if (exactCounts.empty() && counts.empty())
+    {
+        // Nothing stored: a run from its start
+        return;
+    }
+    if (exactCounts.empty())
+    {
+        stored.counts().setSize(counts.size());
+        forAll(counts, i)
+        {
+            stored.counts()[i] = counts[i];
+        }
+    }
+    else if (!stored.setExactCounts(exactCounts))
+    {
+        stored.counts().clear();
+    }
+    stringList exact;
+    this->getModelProperty("exactSums", exact);
+    if (exact.empty())
+    {
+        // Restart files written before the sums were kept exact
+        this->getModelProperty("sums", stored.sums());
+    }
+    else if (!stored.setExactSums(exact))
+    {
+        stored.sums().clear();
+    }
+    wordList names;
+    this->getModelProperty("patches", names);
+
+    DynamicList<word> dropped;
+    const bool placed = stored.placeByName(names, dropped);
+    if (!placed || dropped.size())
+    {
+        WarningInFunction
+            << (
+                   placed
+                 ? "Dropping the stored statistics of patches not in "
+                   "this mesh: "
+                 : "Ignoring the stored statistics: they do not fit "
+                   "their patch names, or (older restart files without "
+                   "names) this mesh's patches "
+               )
+            << dropped << endl;
+    }
+    if (!placed)
+    {
+        stored = stats_;
+    }
+}
+
+
+template<class CloudType>
 void Foam::RoughWallInteraction<CloudType>::checkCoeffsKeywords() const
 {
     // Settings put at the wrong level (e.g. e or lateralTilt outside the
@@ -288,8 +356,10 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
     file_(),
     wallSpeedSqr_(stats_.nPatches(), scalar(-1)),
     wallSpeedSqrReported_(stats_.nPatches(), scalar(-1)),
-    warnedStored_(false)
+    stored_(stats_)
 {
+    readStored();
+
     bool anyRough = false;
     for (const roughWallPatchSettings& settings : patches_)
     {
@@ -365,7 +435,7 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
     file_(),
     wallSpeedSqr_(pim.wallSpeedSqr_),
     wallSpeedSqrReported_(pim.wallSpeedSqrReported_),
-    warnedStored_(pim.warnedStored_)
+    stored_(pim.stored_)
 {}
 
 
@@ -430,66 +500,9 @@ void Foam::RoughWallInteraction<CloudType>::info(ROUGHWALL_INFO_PARAMETERS)
     PatchInteractionModel<CloudType>::info(ROUGHWALL_INFO_ARGUMENTS);
 
     // This run's counters of all processors plus the totals stored at the
-    // last write time (restart), each patch's by its name
+    // last write time
     roughWallStatistics total(stats_.reduced());
-    {
-        roughWallStatistics stored(stats_);
-        stored.reset();
-
-        stringList exactCounts;
-        this->getModelProperty("exactCounts", exactCounts);
-        if (exactCounts.empty())
-        {
-            // Restart files written before the counters had 64 bits
-            labelList counts;
-            this->getModelProperty("counts", counts);
-            stored.counts().setSize(counts.size());
-            forAll(counts, i)
-            {
-                stored.counts()[i] = counts[i];
-            }
-        }
-        else if (!stored.setExactCounts(exactCounts))
-        {
-            stored.counts().clear();
-        }
-        stringList exact;
-        this->getModelProperty("exactSums", exact);
-        if (exact.empty())
-        {
-            // Restart files written before the sums were kept exact
-            this->getModelProperty("sums", stored.sums());
-        }
-        else if (!stored.setExactSums(exact))
-        {
-            stored.sums().clear();
-        }
-        wordList names;
-        this->getModelProperty("patches", names);
-
-        DynamicList<word> dropped;
-        const bool placed = stored.placeByName(names, dropped);
-        if (placed)
-        {
-            total += stored;
-        }
-
-        // Once per run: the stored totals are read at every step
-        if (!warnedStored_ && (!placed || dropped.size()))
-        {
-            warnedStored_ = true;
-            WarningInFunction
-                << (
-                       placed
-                     ? "Dropping the stored statistics of patches not in "
-                       "this mesh: "
-                     : "Ignoring the stored statistics: they do not fit "
-                       "their patch names, or (older restart files without "
-                       "names) this mesh's patches "
-                   )
-                << dropped << endl;
-        }
-    }
+    total += stored_;
 
     total.write
     (
@@ -506,6 +519,7 @@ void Foam::RoughWallInteraction<CloudType>::info(ROUGHWALL_INFO_PARAMETERS)
         this->setModelProperty("exactCounts", total.exactCounts());
         this->setModelProperty("exactSums", total.exactSums());
         this->setModelProperty("patches", total.patchNames());
+        stored_ = total;
         stats_.reset();
     }
 }
