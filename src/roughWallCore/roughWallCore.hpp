@@ -12,6 +12,7 @@
 //   envelopeAngleTable.hpp       Delta(d) of a profile tabulated for look-ups per hit
 //   roughnessAngle.hpp           Delta(d) in the four forms a patch gives it
 //   spinLiftAndTorque.hpp        rotational lift and fluid torque of a sphere
+//   fictitiousPartnerCollision.hpp  inter-particle collisions (Sommerfeld's model)
 // (and, below collideWithRoughWall: facetAngleSampler, facetCollision,
 // CollisionAngleDistribution, gaussianMass, standardNormal, fastMath)
 #pragma once
@@ -26,3 +27,4 @@
 #include "envelopeAngleTable.hpp"
 #include "roughnessAngle.hpp"
 #include "spinLiftAndTorque.hpp"
+#include "fictitiousPartnerCollision.hpp"
