@@ -1,0 +1,283 @@
+#!/usr/bin/env python3
+"""Inter-particle collisions (SommerfeldCollision, the stochastic collision
+model `Sommerfeld`) in a granular gas, against dilute kinetic theory.
+
+The case: the closed 0.1 m box of the stability suite with 2 x 2 x 2 cells,
+no carrier forces (no drag, no gravity), specular walls (`rebound`, e = 1,
+mu = 0: a homogeneous gas stays homogeneous, as in a periodic box), and
+NGROUPS injectors whose velocities are drawn from a Maxwellian of
+temperature T_START per component; PARCELS parcels of d = 1 mm, nParticle
+chosen for a collision frequency of about 20 per second.  A first run with
+e_pp = 1 and mu_pp = 0 relaxes the gas to a Maxwellian; a restart with
+e_pp = 0.8 lets it cool.
+
+Oracles (closed forms written here; none calls the library):
+  - collision frequency: the log's collisions per particle per second,
+    averaged over the elastic run after its first quarter, equal
+    f = 4 n d^2 sqrt(pi T) (n the number density of real particles, T the
+    parcels' temperature per component), within 3 standard errors (those
+    of the per-step frequencies and of T);
+  - elastic, smooth: T at the end of the first run within 4 % of T at its
+    first write (energy is kept in expectation, not per collision: the
+    collisions' random changes make T a random walk whose sd is about
+    0.7 sqrt(c/N) after c collisions per particle of N, 1.1 % here);
+  - Haff's law: after the restart T(t) = T1/(1 + (t - t1)/t0)^2 with
+    t0 = 6/((1 - e^2) f1), f1 = 4 n d^2 sqrt(pi T1), within 8 % at every
+    write, and the gas cooled to below 0.4 T1 (Haff: 0.21).  The model's T
+    stays 1-5 % above Haff's law as the gas cools (the same core model with
+    20,000 particles in one cell, six seeds: +1.5 to +3.3 % at T = 0.21 T1):
+    the real particles drift from a Maxwellian while their partners are
+    drawn Gaussian; the sampling error of T is 0.7 % here;
+  - parcels conserved: the parcel count of every step equals the injected,
+    and the log's real particles of every step are the whole cloud's;
+  - --parallel: the same on 2 ranks (the statistics and the log's counts
+    reduced over processors), and the run repeated gives the same parcels
+    bit for bit;
+  - --badInput: out-of-range e, an unknown keyword (its closest match
+    named), sizeClassBounds not ascending, and correlation on without a
+    turbulent carrier each stop with a message naming the keyword.
+
+Usage: testSommerfeldCollision.py --platform P [--parallel | --badInput]
+           [--work DIR]
+
+SPDX-License-Identifier: GPL-3.0-or-later
+"""
+
+import argparse
+import math
+import os
+import re
+
+import numpy as np
+
+from foamcase import testing as t
+import foamcase as fc
+
+PARCELS_PER_GROUP = 60
+NGROUPS = 256
+PARCELS = PARCELS_PER_GROUP*NGROUPS
+D = 1e-3
+T_START = 1.0               # m^2/s^2 per component
+VOLUME = 0.1**3
+F_TARGET = 20.0             # collisions per particle and second
+N_DENSITY = F_TARGET/(4*D*D*math.sqrt(math.pi*T_START))
+N_PARTICLE = N_DENSITY*VOLUME/PARCELS
+E_COOLING = 0.8
+T1, T2 = "0.25", "1.25"     # end of the elastic run, of the cooling run
+
+SPECULAR = """patchInteractionModel roughWallInteraction;
+
+roughWallInteractionCoeffs
+{
+    patches
+    (
+        walls { type rebound; e 1; mu 0; }
+    );
+}
+"""
+
+COLLISIONS = """stochasticCollisionModel Sommerfeld;
+
+    SommerfeldCoeffs
+    {
+%s
+    }
+"""
+
+
+def model_entry(e=1.0, mu=0.0, extra=""):
+    body = "        e               %r;\n        mu              %r;\n" \
+           "        correlation     false;\n" % (e, mu)
+    return COLLISIONS % (body + extra)
+
+
+def make_case(platform, path, kind="kinematic", seed=3):
+    rng = np.random.default_rng(seed)
+    groups = [{"name": "g%d" % i, "n": PARCELS_PER_GROUP, "d": D,
+               "U0": tuple(rng.normal(0, math.sqrt(T_START), 3)),
+               "box": ((0.002, 0.002, 0.002), (0.098, 0.098, 0.098))}
+              for i in range(NGROUPS)]
+    case, parcels, _ = t.closed_box_case(platform, path, groups, kind, seed)
+    t.check(parcels == PARCELS, "%d parcels injected" % parcels)
+    # nParticle of every injector, no forces, 2 x 2 x 2 cells
+    fc.replace_in_file(case.file("constant/injectors"),
+                       r"nParticle\s+1;", "nParticle       %r;" % N_PARTICLE,
+                       count=NGROUPS)
+    fc.replace_in_file(case.cloud_properties(),
+                       r"particleForces\s*\{[^}]*\}", "particleForces\n    {}")
+    fc.replace_in_file(case.file("system/blockMeshDict"),
+                       r"\(10 10 10\)", "(2 2 2)")
+    case.write_settings(SPECULAR)
+    set_model(case, model_entry())
+    case.set_control(deltaT="0.0025", endTime=T1, writeControl="runTime",
+                     writeInterval="0.05")
+    return case
+
+
+def set_model(case, entry):
+    text = fc.read_text(case.cloud_properties())
+    text, n = re.subn(r"stochasticCollisionModel\s+\w+;(\s*SommerfeldCoeffs"
+                      r"\s*\{[^}]*\})?", entry.strip(), text)
+    if n != 1:
+        raise fc.FoamError("no stochasticCollisionModel entry")
+    fc.write_text(case.cloud_properties(), text)
+
+
+def temperature(case, time_name):
+    """T per component of the parcels (mean of the three variances) and the
+    parcel count"""
+    U = case.read_cloud(time_name, ["U"])["U"].reshape(-1, 3)
+    return float(np.mean(np.var(U, axis=0))), len(U)
+
+
+def frequencies(case, log):
+    """The model's collisions per particle per second of every step; the
+    real particles it counts are the whole cloud's at every step (summed
+    over processors): PARCELS nParticle"""
+    rows = re.findall(r"Sommerfeld collisions: (\S+) per particle per "
+                      r"second \(\S+ of (\S+) particles", case.log(log))
+    t.check(len(rows) > 10, "%s: %d steps report their collisions"
+            % (log, len(rows)))
+    totals = sorted(set(float(n) for _, n in rows))
+    expected = PARCELS*N_PARTICLE
+    t.check(all(abs(n/expected - 1) < 1e-9 for n in totals),
+            "%s: every step counts %s real particles (the cloud's: %.9g)"
+            % (log, totals[:3], expected))
+    return np.array([float(f) for f, _ in rows])
+
+
+def check_parcels(case, log):
+    steps = case.read_steps(log)
+    counts = sorted(set(s["parcels"] for s in steps))
+    t.check(counts == [PARCELS], "%s: parcel count %s at every one of %d "
+            "steps (injected %d)" % (log, counts, len(steps), PARCELS))
+
+
+def kinetic_frequency(T):
+    return 4*N_DENSITY*D*D*math.sqrt(math.pi*T)
+
+
+def check_gas(case, label):
+    """The elastic run, then the cooling run (a restart)"""
+    case.solve("log.elastic")
+    check_parcels(case, "log.elastic")
+    times = [name for value, name in fc.time_dirs(case.path)
+             if 0 < value <= float(T1) + 1e-9]
+    temps = [temperature(case, x)[0] for x in times]
+    T_first, T_last = temps[0], temps[-1]
+    t.check(abs(T_last/T_first - 1) < 0.04,
+            "%s: e = 1, mu = 0 keeps the energy: T %.4f at t = %s, %.4f at "
+            "t = %s" % (label, T_first, times[0], T_last, times[-1]))
+
+    f = frequencies(case, "log.elastic")
+    f = f[len(f)//4:]
+    T_mean = float(np.mean(temps[1:]))
+    f_mean = float(np.mean(f))
+    se_f = float(np.std(f, ddof=1))/math.sqrt(len(f))
+    expected = kinetic_frequency(T_mean)
+    # T's sampling error sqrt(2/(3N)) enters f as half of it
+    se_T = 0.5*expected*math.sqrt(2/(3*PARCELS))
+    se = math.hypot(se_f, se_T)
+    t.check(abs(f_mean - expected) < 3*se,
+            "%s: collision frequency %.3f /s against kinetic theory's "
+            "4 n d^2 sqrt(pi T) = %.3f /s (T = %.4f m^2/s^2, s.e. %.3f, "
+            "z = %.2f)" % (label, f_mean, expected, T_mean, se,
+                           (f_mean - expected)/se))
+
+    # Cooling: e = 0.8 from T1 on
+    T_1 = temperature(case, T1)[0]
+    set_model(case, model_entry(e=E_COOLING))
+    case.set_control(startFrom="latestTime", endTime=T2, writeInterval="0.25")
+    case.solve("log.cooling")
+    check_parcels(case, "log.cooling")
+    t0 = 6/((1 - E_COOLING**2)*kinetic_frequency(T_1))
+    times = [name for value, name in fc.time_dirs(case.path)
+             if float(T1) + 1e-9 < value <= float(T2) + 1e-9]
+    t.check(len(times) == 4, "%s: cooling written at %s" % (label, times))
+    for x in times:
+        T = temperature(case, x)[0]
+        haff = T_1/(1 + (float(x) - float(T1))/t0)**2
+        t.check(abs(T/haff - 1) < 0.08,
+                "%s: Haff's law at t = %s: T = %.4f, T1/(1 + t/t0)^2 = %.4f "
+                "(t0 = %.3f s)" % (label, x, T, haff, t0))
+    t.check(T < 0.4*T_1, "%s: the gas cooled to %.3f of T1" % (label, T/T_1))
+
+
+def test_gas(args, platform):
+    case = make_case(platform, os.path.join(args.work, "gas"))
+    case.mesh()
+    check_gas(case, "serial")
+
+
+def test_parallel(args, platform):
+    runs = []
+    for name in ("first", "repeat"):
+        case = make_case(platform, os.path.join(args.work, name))
+        case.mesh(nprocs=2)
+        runs.append(case)
+    check_gas(runs[0], "2 ranks")
+    runs[1].solve("log.elastic")
+    for proc in ("processor0", "processor1"):
+        a, b = (fc.read_cloud(os.path.join(c.path, proc), T1, ["U"],
+                              platform.cloud)["U"] for c in runs)
+        a, b = np.asarray(a), np.asarray(b)
+        t.check(a.size > 0 and a.shape == b.shape and np.array_equal(a, b),
+                "%s: the repeated run's parcels equal the first's bit for "
+                "bit (%d values)" % (proc, a.size))
+
+
+BAD = [
+    ("e 1.2", model_entry(e=1.2), [r"\be\b", r"\[0, 1\]", r"1\.2"]),
+    ("unknown keyword", model_entry(extra="        sizeClasses (1e-3);\n"),
+     ["sizeClasses", "sizeClassBounds"]),
+    ("bounds not ascending",
+     model_entry(extra="        sizeClassBounds (2e-3 1e-3);\n"),
+     ["sizeClassBounds", "ascending"]),
+    ("correlation without turbulence",
+     model_entry().replace("correlation     false", "correlation     true"),
+     ["correlation", "turbulent carrier"]),
+]
+
+
+def test_bad_input(args, platform):
+    for label, entry, patterns in BAD:
+        case = make_case(platform, os.path.join(args.work, re.sub(
+            r"\W+", "_", label)))
+        set_model(case, entry)
+        case.set_control(endTime="0.005")
+        case.mesh()
+        rc, _ = case.solve(check_rc=False)
+        log = case.log()
+        t.check(rc != 0, "%s: the run stops (exit code %d)" % (label, rc))
+        for pattern in patterns:
+            t.check(re.search(pattern, log) is not None,
+                    "%s: the message names %r" % (label, pattern))
+        t.check("Sommerfeld" in log or "SommerfeldCoeffs" in log,
+                "%s: the message names the model's dictionary" % label)
+    # The control: the same case with good input runs
+    case = make_case(platform, os.path.join(args.work, "control"))
+    case.set_control(endTime="0.005")
+    case.mesh()
+    case.solve()
+    t.check(re.search(r"Sommerfeld: e = 1, mu = 0, correlation off, size "
+                      r"classes 1", case.log()) is not None,
+            "control: the settings line of the log")
+
+
+def test():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    t.add_platform_args(p, kinds=False)
+    p.add_argument("--parallel", action="store_true")
+    p.add_argument("--badInput", action="store_true")
+    args = p.parse_args()
+    platform = fc.Platform(args.platform)
+    if args.badInput:
+        test_bad_input(args, platform)
+    elif args.parallel:
+        test_parallel(args, platform)
+    else:
+        test_gas(args, platform)
+
+
+if __name__ == "__main__":
+    t.main(test)
