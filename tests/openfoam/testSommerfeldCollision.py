@@ -37,7 +37,12 @@ Oracles (closed forms written here; none calls the library):
     named), sizeClassBounds not ascending, and correlation on without a
     turbulent carrier each stop with a message naming the keyword.
 
-Usage: testSommerfeldCollision.py --platform P [--parallel | --badInput]
+  - --spin: the colliding cloud: with mu = 0.4 nearly every parcel spins
+    after about five collisions, at kinetic theory's frequency; with
+    mu = 0 every spin stays exactly zero.
+
+Usage: testSommerfeldCollision.py --platform P [--parallel | --badInput |
+           --spin]
            [--work DIR]
 
 SPDX-License-Identifier: GPL-3.0-or-later
@@ -209,6 +214,50 @@ def test_gas(args, platform):
     check_gas(case, "serial")
 
 
+def test_spin(args, platform):
+    """The colliding cloud, whose parcels carry spin: elastic collisions
+    with friction (mu 0.4) spin the parcels up from rest, at the collision
+    frequency of kinetic theory (friction does not change it); smooth ones
+    (mu 0) leave every spin exactly zero (no tangential impulse)"""
+    for mu in (0.0, 0.4):
+        case = make_case(platform, os.path.join(args.work, "mu%g" % mu),
+                         kind="colliding")
+        set_model(case, model_entry(mu=mu))
+        case.mesh()
+        case.solve("log.elastic")
+        check_parcels(case, "log.elastic")
+        L = case.read_cloud(T1, ["angularMomentum"])["angularMomentum"]
+        L = np.asarray(L).reshape(-1, 3)
+        t.check(len(L) == PARCELS and np.all(np.isfinite(L)),
+                "mu %g: %d finite angular momenta" % (mu, len(L)))
+        spinning = float(np.mean(np.linalg.norm(L, axis=1) > 0))
+        if mu == 0:
+            t.check(spinning == 0, "mu 0: no parcel spins (%.3f spin)"
+                    % spinning)
+            continue
+        # Five collisions per particle: nearly every parcel has collided
+        t.check(spinning > 0.95, "mu %g: %.3f of the parcels spin after "
+                "about five collisions each" % (mu, spinning))
+        # The gas cools (friction): each write's T against the frequencies
+        # of the 11 steps around it
+        f = frequencies(case, "log.elastic")
+        ratios = []
+        for value, name in fc.time_dirs(case.path):
+            if not 0.1 - 1e-9 <= value <= float(T1) - 0.0125 + 1e-9:
+                continue
+            k = int(round(value/0.0025))
+            window = f[k - 6:k + 5]
+            ratios.append(float(np.mean(window))
+                          / kinetic_frequency(temperature(case, name)[0]))
+        ratio = float(np.mean(ratios))
+        # Each window: ~11 x 0.05 x 2800 = 1,500 collisions, 2.6 %
+        se = 0.026/math.sqrt(len(ratios))
+        t.check(len(ratios) >= 3 and abs(ratio - 1) < 3*se + 0.01,
+                "mu %g: collision frequency / 4 n d^2 sqrt(pi T) = %.4f at "
+                "%d writes as the gas cools (s.e. %.4f)"
+                % (mu, ratio, len(ratios), se))
+
+
 def test_parallel(args, platform):
     runs = []
     for name in ("first", "repeat"):
@@ -269,12 +318,15 @@ def test():
     t.add_platform_args(p, kinds=False)
     p.add_argument("--parallel", action="store_true")
     p.add_argument("--badInput", action="store_true")
+    p.add_argument("--spin", action="store_true")
     args = p.parse_args()
     platform = fc.Platform(args.platform)
     if args.badInput:
         test_bad_input(args, platform)
     elif args.parallel:
         test_parallel(args, platform)
+    elif args.spin:
+        test_spin(args, platform)
     else:
         test_gas(args, platform)
 

@@ -201,7 +201,7 @@ Foam::SommerfeldCollision<CloudType>::kolmogorovTime() const
             << exit(FatalIOError);
     }
     const volScalarField nu(cloud.mu()/cloud.rho());
-    const dimensionedScalar small(tEpsilon().dimensions(), vSmall);
+    const dimensionedScalar small("small", tEpsilon().dimensions(), 1e-300);
     return sqrt(nu/max(tEpsilon(), small));
 }
 
