@@ -10,7 +10,7 @@ and roughnessAngle and roughness together.  Same harness and checks as
 testBadInput.py (FOAM FATAL IO ERROR, the settings file, the patches entry,
 the keyword, the allowed range; no crash).
 
-Usage: testRoughnessParametersBadInput.py --platform openfoam13|openfoam1912
+Usage: testRoughnessTableBadInput.py --platform openfoam13|openfoam1912
            [--cloud KIND] [--work DIR]
 
 SPDX-License-Identifier: GPL-3.0-or-later
