@@ -24,7 +24,7 @@ but they count it differently:
                 object moves the cloud after the write: the step before
                 the last).
 
-Usage: testStandardTypes.py --platform openfoam13|openfoam1912 [--cloud KIND]
+Usage: testPatchSettingsStandardTypes.py --platform openfoam13|openfoam1912 [--cloud KIND]
            [--parcels N] [--work DIR]
 
 SPDX-License-Identifier: GPL-3.0-or-later
