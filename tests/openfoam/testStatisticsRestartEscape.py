@@ -33,7 +33,7 @@ Oracles (none calls roughWallInteraction):
     this case, and is the same for both models.  (docs/testing.md, "Known
     OpenFOAM behaviour".)
 
-Usage: testRestartEscape.py --platform P [--cloud kinematic|colliding]
+Usage: testStatisticsRestartEscape.py --platform P [--cloud kinematic|colliding]
            [--parcels N] [--work DIR]
 
 SPDX-License-Identifier: GPL-3.0-or-later
