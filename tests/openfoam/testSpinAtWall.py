@@ -179,7 +179,7 @@ def test():
     case.solve("log.solver.2")
 
     if two_d:
-        # Control of test2D's warning: rough, lateralTilt false, 2-D
+        # Control of testTwoD's warning: rough, lateralTilt false, 2-D
         t.check("lateralTilt true has no effect" not in
                 case.log("log.solver.1") + case.log("log.solver.2"),
                 "2-D without lateralTilt: no warning about it")
