@@ -22,7 +22,7 @@
 
 #include "fastMath.hpp"
 #include "roughWallBase.hpp"
-#include "roughWallLimits.hpp"
+#include "limitsAndUnits.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>

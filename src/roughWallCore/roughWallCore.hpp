@@ -3,7 +3,8 @@
 //
 // The whole core in one include, as Eigen has one header per module:
 //   roughWallBase.hpp            Vec3 and pi
-//   roughWallLimits.hpp          every default and limit of the settings
+//   limitsAndUnits.hpp           every default and limit of the settings,
+//                                degrees to radians and back
 //   roughWallCollision.hpp       collideWithRoughWall: one wall hit, the entry point
 //   restitutionCoefficients.hpp  k_n and k_t of a hit (statistics)
 //   profileRoughness.hpp         Delta(d) from Ra, Rq, Rz, RSm (closed-form estimate)
@@ -17,7 +18,7 @@
 #pragma once
 
 #include "roughWallBase.hpp"
-#include "roughWallLimits.hpp"
+#include "limitsAndUnits.hpp"
 #include "roughWallCollision.hpp"
 #include "restitutionCoefficients.hpp"
 #include "profileRoughness.hpp"
