@@ -21,7 +21,7 @@
 #pragma once
 
 #include "fastMath.hpp"
-#include "roughWallBase.hpp"
+#include "vectorAndPi.hpp"
 #include "limitsAndUnits.hpp"
 
 #include <Eigen/Core>

@@ -7,7 +7,7 @@
 // the documentation.
 #pragma once
 
-#include "roughWallBase.hpp"
+#include "vectorAndPi.hpp"
 
 namespace roughWall
 {

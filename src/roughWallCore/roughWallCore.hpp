@@ -2,7 +2,7 @@
 // Copyright (C) 2026 roughWallInteraction authors. SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The whole core in one include, as Eigen has one header per module:
-//   roughWallBase.hpp            Vec3 and pi
+//   vectorAndPi.hpp              Vec3 and pi
 //   limitsAndUnits.hpp           every default and limit of the settings,
 //                                degrees to radians and back
 //   roughWallCollision.hpp       collideWithRoughWall: one wall hit, the entry point
@@ -17,7 +17,7 @@
 // CollisionAngleDistribution, gaussianMass, standardNormal, fastMath)
 #pragma once
 
-#include "roughWallBase.hpp"
+#include "vectorAndPi.hpp"
 #include "limitsAndUnits.hpp"
 #include "roughWallCollision.hpp"
 #include "restitutionCoefficients.hpp"
