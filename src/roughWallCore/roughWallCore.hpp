@@ -6,7 +6,7 @@
 //   limitsAndUnits.hpp           every default and limit of the settings,
 //                                degrees to radians and back
 //   roughWallCollision.hpp       collideWithRoughWall: one wall hit, the entry point
-//   restitutionCoefficients.hpp  k_n and k_t of a hit (statistics)
+//   effectiveRestitution.hpp     k_n and k_t of a hit (statistics)
 //   profileRoughness.hpp         Delta(d) from Ra, Rq, Rz, RSm (closed-form estimate)
 //   rollingSphereEnvelope.hpp    Delta(d) and the tilt's shape from a wall profile
 //   profileFile.hpp              reading a measured profile trace
@@ -20,7 +20,7 @@
 #include "vectorAndPi.hpp"
 #include "limitsAndUnits.hpp"
 #include "roughWallCollision.hpp"
-#include "restitutionCoefficients.hpp"
+#include "effectiveRestitution.hpp"
 #include "profileRoughness.hpp"
 #include "rollingSphereEnvelope.hpp"
 #include "profileFile.hpp"

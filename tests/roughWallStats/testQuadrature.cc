@@ -9,7 +9,7 @@
 #include "quadratureStatistics.hh"
 
 #include "CollisionAngleDistribution.hpp"
-#include "restitutionCoefficients.hpp"
+#include "effectiveRestitution.hpp"
 #include "oracleQuadrature.hh"
 #include "testSupport.hh"
 
