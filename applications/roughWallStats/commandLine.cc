@@ -4,7 +4,7 @@
 #include "commandLine.hh"
 #include "profileRoughness.hpp"
 #include "rollingSphereEnvelope.hpp"
-#include "roughWallLimits.hpp"
+#include "limitsAndUnits.hpp"
 
 #include <cerrno>
 #include <cmath>

@@ -9,7 +9,7 @@
 
 #include "facetCollision.hpp"
 #include "impactCoefficients.hpp"
-#include "restitutionCoefficients.hpp"
+#include "effectiveRestitution.hpp"
 #include "gaussianMass.hpp"
 
 #include <cmath>

@@ -15,7 +15,7 @@
 
 #include "model.hh"
 #include "statistics.hh"
-#include "roughWallLimits.hpp"
+#include "limitsAndUnits.hpp"
 
 #include <cstdint>
 #include <random>

@@ -33,7 +33,7 @@ DELTAS = ["0", "2", "8", "20", "45"]
 # Box-Muller proposals, a second normalisation of the tangent), measured at
 # commit 22b71b2 (on the machine its hit-cost.machine.json names) and kept
 # for the comparison
-BASELINE = "baseline-22b71b2"
+BASELINE = "baseline-beforeSpeedWork"
 
 
 def alpha_label(a):

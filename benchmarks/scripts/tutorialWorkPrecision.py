@@ -217,7 +217,8 @@ def figure(a):
 
 
 def table(rows):
-    platforms = sorted({r.get("platform", "openfoam13") for r in rows})
+    platforms = sorted({r.get("platform", fc.platforms.UNRECORDED_PLATFORM)
+                        for r in rows})
     spin_ups = sorted({str(r["spin_up"]) for r in rows})
     variants = sorted({r.get("variant", "rough2.5") for r in rows})
     lines = ["horizontalChannel, variant %s, on %s, spin-up "
@@ -252,8 +253,8 @@ def main():
                                 formatter_class=argparse.RawTextHelpFormatter)
     p.add_argument("--work", default=os.path.join(bc.ROOT, "build",
                                                   "benchmarks", "tutorial"))
-    p.add_argument("--platform", default="openfoam14",
-                   choices=("openfoam14", "openfoam13"))
+    p.add_argument("--platform", default=fc.DEFAULT_PLATFORM,
+                   choices=fc.FOUNDATION_PLATFORMS)
     p.add_argument("--variant", default="rough5",
                    help="file of the tutorial's particles/constant/variants")
     p.add_argument("--quick", action="store_true")

@@ -21,8 +21,8 @@
 #pragma once
 
 #include "fastMath.hpp"
-#include "roughWallBase.hpp"
-#include "roughWallLimits.hpp"
+#include "vectorAndPi.hpp"
+#include "limitsAndUnits.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>

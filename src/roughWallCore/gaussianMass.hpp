@@ -6,7 +6,7 @@
 // intervals by Gauss-Legendre quadrature (no cancellation), tails by erfc.
 #pragma once
 
-#include "roughWallBase.hpp"
+#include "vectorAndPi.hpp"
 
 #include <algorithm>
 #include <array>

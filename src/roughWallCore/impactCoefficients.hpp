@@ -28,7 +28,7 @@
 #pragma once
 
 #include "facetCollision.hpp"
-#include "roughWallLimits.hpp"
+#include "limitsAndUnits.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -22,13 +22,13 @@
 // geometric estimate of that picture (docs/roughWallInteraction.md), not
 // an equation taken from that paper.
 //
-// Without Rq, Rq is taken from Ra or Rz as for a sinusoid (roughWallLimits).
+// Without Rq, Rq is taken from Ra or Rz as for a sinusoid (limitsAndUnits.hpp).
 // Validity: gentle flanks, 2 pi Rq / RSm <= maxProfileSlope (Delta <= 45
 // deg); Rq >= Ra (true of every profile); RSm > Ra.
 #pragma once
 
 #include "gaussianMass.hpp"
-#include "roughWallLimits.hpp"
+#include "limitsAndUnits.hpp"
 
 #include <cmath>
 #include <string>

@@ -83,7 +83,7 @@
 // mean peak-to-valley height is rzPerRqGaussian = 4.11 Rq (below).
 #pragma once
 
-#include "roughWallBase.hpp"
+#include "vectorAndPi.hpp"
 #include "standardNormal.hpp"
 
 #include <algorithm>

@@ -31,7 +31,7 @@
 #include "facetAngleSampler.hpp"
 #include "facetCollision.hpp"
 #include "fastMath.hpp"
-#include "roughWallLimits.hpp"
+#include "limitsAndUnits.hpp"
 #include "standardNormal.hpp"
 
 #include <algorithm>

@@ -2,10 +2,11 @@
 // Copyright (C) 2026 roughWallInteraction authors. SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The whole core in one include, as Eigen has one header per module:
-//   roughWallBase.hpp            Vec3 and pi
-//   roughWallLimits.hpp          every default and limit of the settings
+//   vectorAndPi.hpp              Vec3 and pi
+//   limitsAndUnits.hpp           every default and limit of the settings,
+//                                degrees to radians and back
 //   roughWallCollision.hpp       collideWithRoughWall: one wall hit, the entry point
-//   restitutionCoefficients.hpp  k_n and k_t of a hit (statistics)
+//   effectiveRestitution.hpp     k_n and k_t of a hit (statistics)
 //   profileRoughness.hpp         Delta(d) from Ra, Rq, Rz, RSm (closed-form estimate)
 //   rollingSphereEnvelope.hpp    Delta(d) and the tilt's shape from a wall profile
 //   profileFile.hpp              reading a measured profile trace
@@ -17,10 +18,10 @@
 // CollisionAngleDistribution, gaussianMass, standardNormal, fastMath)
 #pragma once
 
-#include "roughWallBase.hpp"
-#include "roughWallLimits.hpp"
+#include "vectorAndPi.hpp"
+#include "limitsAndUnits.hpp"
 #include "roughWallCollision.hpp"
-#include "restitutionCoefficients.hpp"
+#include "effectiveRestitution.hpp"
 #include "profileRoughness.hpp"
 #include "rollingSphereEnvelope.hpp"
 #include "profileFile.hpp"

@@ -20,7 +20,7 @@
 #include "envelopeAngleTable.hpp"
 #include "profileRoughness.hpp"
 #include "rollingSphereEnvelope.hpp"
-#include "roughWallLimits.hpp"
+#include "limitsAndUnits.hpp"
 
 #include <sstream>
 #include <string>

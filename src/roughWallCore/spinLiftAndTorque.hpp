@@ -43,7 +43,7 @@
 // huge (finite): no 0*inf, no 0/0, no NaN (tests/core/testParticleSpin.cc).
 #pragma once
 
-#include "roughWallBase.hpp"
+#include "vectorAndPi.hpp"
 
 #include <Eigen/Dense>
 

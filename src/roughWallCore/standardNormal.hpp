@@ -20,7 +20,7 @@
 // 1.2e-9 too large).
 #pragma once
 
-#include "roughWallBase.hpp"
+#include "vectorAndPi.hpp"
 
 #include <array>
 #include <cmath>

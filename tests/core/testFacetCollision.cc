@@ -4,7 +4,7 @@
 // impulse cone |J_t| <= mu |J_n|, exact rolling after a stick).
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#include "restitutionCoefficients.hpp"
+#include "effectiveRestitution.hpp"
 #include "testSupport.hh"
 
 #include <gtest/gtest.h>

@@ -4,7 +4,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 #include "roughWallCollision.hpp"
-#include "restitutionCoefficients.hpp"
+#include "effectiveRestitution.hpp"
 #include "testSupport.hh"
 
 #include <gtest/gtest.h>

@@ -20,7 +20,7 @@
 // the support.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#include "restitutionCoefficients.hpp"
+#include "effectiveRestitution.hpp"
 #include "wallHitInvariants.hh"
 
 #include <cmath>

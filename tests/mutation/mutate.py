@@ -21,11 +21,15 @@ Levels:
 
 Usage:
   tests/mutation/mutate.py --level core|openfoam [--report FILE]
-      [--only NAME,NAME] [--platform openfoam13] [--work DIR] [--keep]
+      [--only NAME,NAME] [--platform openfoam14] [--work DIR] [--keep]
       [--baseline] [--overlay BRANCH] [--jobs N]
+  tests/mutation/mutate.py --stale-only     (the fault list's texts only)
+
+With PYTHONPATH=<checkout>/src/python (ctest sets it): the platforms come
+from etc/platforms through foamcase.platforms.
 
 The report (markdown) lists fault, file, tests run, killed by and time, with
-the commit of the source tree.  Standard library only; Debian's python3.
+the commit of the source tree.  Debian's python3 (numpy, as foamcase).
 
 SPDX-License-Identifier: GPL-3.0-or-later
 """
@@ -39,6 +43,14 @@ import subprocess
 import sys
 import tempfile
 import time
+
+try:
+    # The platforms and the default one: etc/platforms, read by foamcase
+    from foamcase.platforms import DEFAULT_PLATFORM, PLATFORMS
+except ImportError:
+    print("TEST FAILED: mutate.py imports foamcase: run it with "
+          "PYTHONPATH=<checkout>/src/python (ctest sets it)", flush=True)
+    sys.exit(1)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
@@ -246,7 +258,8 @@ class Builder:
     def configure(self):
         return run(["cmake", "-S", self.tree, "-B", self.build,
                     "-DCMAKE_BUILD_TYPE=Release",
-                    "-DROUGHWALL_PLATFORMS=" + (self.platform or "openfoam13")],
+                    "-DROUGHWALL_PLATFORMS=" + (self.platform
+                                                or DEFAULT_PLATFORM)],
                    self.log, env=self.env) == 0
 
     def make(self, targets):
@@ -348,7 +361,7 @@ def restore(originals, keep_mtime=False):
 
 
 def tests_of(fault, platform):
-    return fault["tests"].replace("<platform>", platform or "openfoam13")
+    return fault["tests"].replace("<platform>", platform or DEFAULT_PLATFORM)
 
 
 def write_report(path, level, platform, commit, rows, total, command,
@@ -389,12 +402,17 @@ def write_report(path, level, platform, commit, rows, total, command,
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--level", choices=["core", "openfoam"], required=True)
+    parser.add_argument("--level", choices=["core", "openfoam"])
     parser.add_argument("--faults", default=os.path.join(HERE, "faults.json"))
     parser.add_argument("--report", help="markdown report to write")
     parser.add_argument("--only", help="comma-separated fault names")
-    parser.add_argument("--platform", default="openfoam13",
-                        choices=["openfoam13", "openfoam14", "openfoam1912"])
+    parser.add_argument("--platform", default=DEFAULT_PLATFORM,
+                        choices=PLATFORMS,
+                        help="default: the default platform of etc/platforms")
+    parser.add_argument("--stale-only", action="store_true",
+                        help="only check that every fault's text occurs "
+                        "exactly once in the current source (no copy, no "
+                        "build: a second), e.g. after renaming a file")
     parser.add_argument("--work", help="folder of the copy (default: a new "
                         "temporary folder, removed at the end)")
     parser.add_argument("--keep", action="store_true",
@@ -408,6 +426,8 @@ def main():
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--timeout", type=int, default=900)
     args = parser.parse_args()
+    if not args.level and not args.stale_only:
+        parser.error("--level is required (but with --stale-only)")
 
     only = args.only.split(",") if args.only else None
     every = load_faults(args.faults, None, None)
@@ -415,6 +435,9 @@ def main():
     if stale:
         fail("the fault list is stale (tests/mutation/faults.json): " +
              "; ".join("%s in %s: %s" % s for s in stale))
+    if args.stale_only:
+        print("mutation: the fault list is current (%d faults)" % len(every))
+        return
     faults = load_faults(args.faults, args.level, only)
     # A fault may name the platforms whose library contains its code (the
     # field-based Lagrangian's condition: OpenFOAM-13 and -14 only)

@@ -179,7 +179,7 @@ def bad_input(platform, args):
         rc, _ = case.solve(log, check_rc=False)
         out = case.log(log)
         missing = [e for e in expected if e not in out]
-        # (testBadInput.py's signs: v1912 prints "Floating point exception
+        # (testPatchSettingsBadInput.py's signs: v1912 prints "Floating point exception
         # trapping enabled" in every log)
         crashed = rc < 0 or any(sign in out for sign in (
             "sigSegv::sigHandler", "sigFpe::sigHandler", "Segmentation fault",

@@ -10,7 +10,7 @@ file: unreadable (missing), fewer than 10 points, x not increasing, NaN, a
 third column; a path through an unset environment variable (OpenFOAM's
 expansion stopped without naming the keyword or the file before
 2026-11-27); and profile together with RSm.  Same harness and checks as
-testBadInput.py (FOAM FATAL IO ERROR, the settings file, the patches entry,
+testPatchSettingsBadInput.py (FOAM FATAL IO ERROR, the settings file, the patches entry,
 the keyword; no crash).  The expected line numbers are those of the files
 written here.
 
@@ -33,7 +33,7 @@ import re
 from foamcase import testing as t
 import foamcase as fc
 from foamcase import roughnessProfileOracle as profileOracle
-import testBadInput as b
+import testPatchSettingsBadInput as b
 
 
 def profile(name):

@@ -42,9 +42,9 @@ import numpy as np
 from foamcase import testing as t
 import foamcase as fc
 from foamcase import roughWallOracle as oracle
+from foamcase.testConstants import sphere_inertia
 
 E, MU0, MUD, DELTA_DEG = 0.8, 0.4, 0.4, 8.0
-RHO_P = 2500.0
 DT = 0.001
 END = 0.05
 
@@ -96,7 +96,7 @@ def spin_of(name):
 
 
 def inertia(d):
-    return 0.1 * RHO_P * math.pi / 6 * d**3 * d**2
+    return sphere_inertia(d)
 
 
 def set_spins(case, time_name, names):
@@ -179,7 +179,7 @@ def test():
     case.solve("log.solver.2")
 
     if two_d:
-        # Control of test2D's warning: rough, lateralTilt false, 2-D
+        # Control of testTwoD's warning: rough, lateralTilt false, 2-D
         t.check("lateralTilt true has no effect" not in
                 case.log("log.solver.1") + case.log("log.solver.2"),
                 "2-D without lateralTilt: no warning about it")

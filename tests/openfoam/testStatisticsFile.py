@@ -80,6 +80,7 @@ import numpy as np
 from foamcase import testing as t
 import foamcase as fc
 from foamcase import roughWallOracle as oracle
+from foamcase.testConstants import parcel_mass, sphere_mass
 
 E, MU0, MUD, DELTA_DEG = 0.8, 0.1, 0.1, 6.0
 
@@ -90,7 +91,6 @@ E, MU0, MUD, DELTA_DEG = 0.8, 0.1, 0.1, 6.0
 #: totals stored then include it: a parcel that escapes in that very step
 #: is counted again after a restart from there; seen restarting from 0.1.)
 RESTART = "0.05"
-RHO_P = 2500.0
 
 #: name -> (wall, velocity, nParticle, d, start y); x in [-0.06, -0.02]
 #: (E: [-0.04, 0]), z in [-0.015, 0.015]
@@ -241,7 +241,7 @@ def part1(args, platform):
     def col(name):
         return fc.column(last, name)
 
-    mass = RHO_P * math.pi / 6 * p["d"]**3
+    mass = sphere_mass(p["d"])
     t.check(bool(np.all(p["nParticle"][groups == "B"] == 2))
             and bool(np.all(p["nParticle"][groups == "N"] == 3)),
             "the parcels carry the nParticle of their injector (2, 3)")
@@ -319,7 +319,7 @@ def part1(args, platform):
                     "%s, normal incidence: mean k_n %.5f, oracle %.5f, |z| = "
                     "%.2f" % (wall, mean, ref["mean_kn"], abs(z)))
 
-    mass_e = 2 * RHO_P * math.pi / 6 * GROUPS["E"][3]**3 * n
+    mass_e = parcel_mass(GROUPS["E"][3], 2) * n
     t.check(col("outlet_nEscape") == n
             and close(col("outlet_massEscape"), mass_e, 1e-9),
             "outlet_nEscape = %d, _massEscape %.10g = nParticle m of group E "
@@ -363,7 +363,7 @@ def part2(args, platform):
     p, groups = read_parcels(uninterrupted, end,
                              ["U", "d", "nParticle", "active"])
     stuck = p["active"] == 0
-    mass = RHO_P * math.pi / 6 * p["d"]**3 * p["nParticle"]
+    mass = parcel_mass(p["d"], p["nParticle"])
     t.check(np.count_nonzero(stuck) > 3 * n
             and bool(np.all(p["U"][stuck] == 0)),
             "uninterrupted: %d parcels stuck on upperWall, at rest"
@@ -375,7 +375,7 @@ def part2(args, platform):
             "stuck parcels %.10g" % (fc.column(last_u, "upperWall_nStick"),
                                      fc.column(last_u, "upperWall_massStick"),
                                      mass[stuck].sum()))
-    injected = {g: n * RHO_P * math.pi / 6 * GROUPS[g][3]**3 * GROUPS[g][2]
+    injected = {g: n * parcel_mass(GROUPS[g][3], GROUPS[g][2])
                 for g in GROUPS}
     escaped = sum(n - np.count_nonzero(groups == g) for g in GROUPS)
     mass_escaped = sum(injected.values()) - mass.sum()

@@ -60,6 +60,7 @@ import re
 import numpy as np
 
 from foamcase import testing as t
+from foamcase.testConstants import parcel_mass
 import foamcase as fc
 from foamcase import roughnessProfileOracle as profileOracle
 
@@ -196,7 +197,7 @@ def test():
         wall_velocity=args.wallVelocity)
 
     # The statistics file against the parcels
-    mass = parcels["rho"] * math.pi / 6 * d**3 * parcels["nParticle"]
+    mass = parcel_mass(d, parcels["nParticle"], parcels["rho"])
     # Relative to the wall
     U_rel = U - np.array([args.wallVelocity, 0, 0])
     incident = np.empty_like(U)

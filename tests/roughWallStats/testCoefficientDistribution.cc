@@ -5,7 +5,7 @@
 
 #include "coefficientDistribution.hh"
 #include "monteCarloStatistics.hh"
-#include "restitutionCoefficients.hpp"
+#include "effectiveRestitution.hpp"
 #include "testSupport.hh"
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>

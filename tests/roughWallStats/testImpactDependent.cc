@@ -3,18 +3,17 @@
 // oracle written here: the vector collision of the model notes (facetRebound
 // in testSupport.hh) with the coefficients of b = alpha + gamma in closed
 // form, weighted by the literal density (1.3), Boost's adaptive
-// Gauss-Kronrod split at the kinks found by a dense scan and bisection.
+// Gauss-Kronrod split at the kinks found by a dense scan and bisection
+// (oracleQuadrature.hh).
 // SPDX-License-Identifier: GPL-3.0-or-later
 
+#include "oracleQuadrature.hh"
 #include "quadratureStatistics.hh"
 #include "testSupport.hh"
 
-#include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <functional>
-#include <vector>
 
 using namespace roughWallStats;
 using namespace roughWallStatsTest;
@@ -40,57 +39,17 @@ struct Means { double kn, kt, kOmega, pNoSlip; };
 
 Means oracle(double DeltaDeg, double AOmega, double alphaDeg)
 {
-    const double alpha = alphaDeg*deg, Delta = DeltaDeg*deg;
-    const auto density = [&](double g)
-    {
-        if (g <= -alpha) return 0.0;
-        return std::exp(-g*g/(2*Delta*Delta))*-std::expm1(-2*alpha*(g + alpha)/(Delta*Delta));
-    };
+    const double alpha = alphaDeg*deg;
     const auto closed = [&](double g)
     {
         return facetRebound(g, alpha, AOmega, materialAt(alpha + g));
     };
-    const double lo = std::max(-alpha, -40*Delta), hi = std::min(0.5*roughWall::pi, 40*Delta);
-    const auto state = [&](double g)
-    {
-        const auto r = closed(g);
-        return 2*r.noSlip + (r.kn < 0);
-    };
-    std::vector<double> breaks{lo};
-    const int n = 20000;
-    for (int i = 0; i < n; ++i)
-    {
-        double a = lo + (hi - lo)*i/n, b = lo + (hi - lo)*(i + 1)/n;
-        if (state(a) != state(b))
-        {
-            const int sa = state(a);
-            for (int j = 0; j < 100; ++j)
-            {
-                const double mid = 0.5*(a + b);
-                (state(mid) == sa ? a : b) = mid;
-            }
-            breaks.push_back(0.5*(a + b));
-        }
-    }
-    breaks.push_back(hi);
-    const auto integrate = [&](const std::function<double(double)>& f)
-    {
-        double sum = 0;
-        for (std::size_t i = 0; i + 1 < breaks.size(); ++i)
-        {
-            sum += boost::math::quadrature::gauss_kronrod<double, 61>::integrate
-            (
-                f, breaks[i], breaks[i + 1], 15, 1e-13
-            );
-        }
-        return sum;
-    };
-    const double Z = integrate(density);
+    const FacetTiltQuadrature q(alpha, DeltaDeg*deg, closed, 15, 1e-13);
     Means m;
-    m.kn = integrate([&](double g) { return density(g)*closed(g).kn; })/Z;
-    m.kt = integrate([&](double g) { return density(g)*closed(g).kt; })/Z;
-    m.kOmega = integrate([&](double g) { return density(g)*closed(g).kOmega; })/Z;
-    m.pNoSlip = integrate([&](double g) { return closed(g).noSlip ? density(g) : 0.0; })/Z;
+    m.kn = q.mean([&](double g) { return closed(g).kn; });
+    m.kt = q.mean([&](double g) { return closed(g).kt; });
+    m.kOmega = q.mean([&](double g) { return closed(g).kOmega; });
+    m.pNoSlip = q.mean([&](double g) { return closed(g).noSlip ? 1.0 : 0.0; });
     return m;
 }
 

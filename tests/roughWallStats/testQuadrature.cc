@@ -1,7 +1,7 @@
 // Quadrature statistics of one facet collision: against an independent
 // oracle (the vector collision of the model notes, section 4, written in the
 // tests' testSupport.hh; the literal density (1.3) normalised numerically; Boost's adaptive
-// Gauss-Kronrod split at kinks found by bisection), against the large-alpha
+// Gauss-Kronrod split at kinks found by bisection: oracleQuadrature.hh), against the large-alpha
 // plateaus and the smooth wall in closed form, and for self-convergence.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
@@ -9,10 +9,10 @@
 #include "quadratureStatistics.hh"
 
 #include "CollisionAngleDistribution.hpp"
-#include "restitutionCoefficients.hpp"
+#include "effectiveRestitution.hpp"
+#include "oracleQuadrature.hh"
 #include "testSupport.hh"
 
-#include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -34,59 +34,13 @@ struct Oracle
 
 Oracle oracle(const Model& m, double alphaDeg)
 {
-    const double alpha = alphaDeg*deg, Delta = m.Delta;
-    // (1.3) up to its constant factor (normalised numerically below), with
-    // exp(-g^2/2D^2) - exp(-(g+2a)^2/2D^2) = exp(-g^2/2D^2) (1 - exp(-2a(g+a)/D^2))
-    // so that alpha << Delta keeps its digits
-    const auto density = [&](double g)
-    {
-        if (g <= -alpha) return 0.0;
-        return std::exp(-g*g/(2*Delta*Delta))*-std::expm1(-2*alpha*(g + alpha)/(Delta*Delta));
-    };
+    const double alpha = alphaDeg*deg;
     const auto closed = [&](double g)
     {
         return facetRebound(g, alpha, m.AOmega, m.material);
     };
-
-    // Kinks by dense sampling and bisection: regime changes and sign of k_n
-    const double lo = std::max(-alpha, -40*Delta), hi = std::min(0.5*roughWall::pi, 40*Delta);
-    const auto state = [&](double g)
-    {
-        const auto r = closed(g);
-        return 2*r.noSlip + (r.kn < 0);
-    };
-    std::vector<double> breaks{lo};
-    const int n = 20000;
-    for (int i = 0; i < n; ++i)
-    {
-        double a = lo + (hi - lo)*i/n, b = lo + (hi - lo)*(i + 1)/n;
-        if (state(a) != state(b))
-        {
-            const int sa = state(a);
-            for (int j = 0; j < 100; ++j)
-            {
-                const double mid = 0.5*(a + b);
-                (state(mid) == sa ? a : b) = mid;
-            }
-            breaks.push_back(0.5*(a + b));
-        }
-    }
-    breaks.push_back(hi);
-
-    const auto integrate = [&](const std::function<double(double)>& f)
-    {
-        double sum = 0;
-        for (std::size_t i = 0; i + 1 < breaks.size(); ++i)
-        {
-            sum += boost::math::quadrature::gauss_kronrod<double, 61>::integrate
-            (
-                [&](double g) { return density(g)*f(g); }, breaks[i], breaks[i + 1], 10, 1e-12
-            );
-        }
-        return sum;
-    };
-    const double Z = integrate([](double) { return 1.0; });
-    const auto mean = [&](const std::function<double(double)>& f) { return integrate(f)/Z; };
+    const FacetTiltQuadrature q(alpha, m.Delta, closed, 10, 1e-12);
+    const auto mean = [&](const std::function<double(double)>& f) { return q.mean(f); };
 
     Oracle o;
     o.meanKn = mean([&](double g) { return closed(g).kn; });

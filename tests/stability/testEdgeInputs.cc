@@ -7,7 +7,7 @@
 // extremes of alpha and Delta.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#include "restitutionCoefficients.hpp"
+#include "effectiveRestitution.hpp"
 #include "sweepSummary.hh"
 
 #include <gtest/gtest.h>

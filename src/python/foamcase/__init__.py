@@ -5,8 +5,9 @@ benchmarks (benchmarks/scripts) and the tutorial's scripts
 (tutorials/incompressibleFluid/horizontalChannel/scripts), on the three
 platforms (OpenFOAM-13 and -14, openfoam.org; v1912, ESI):
 
-  platforms   what differs between the platforms (solvers, cloud names),
-              where the loader finds the library
+  platforms   the platforms and the default one (read from etc/platforms),
+              what differs between them (solvers, cloud names), where the
+              loader finds the library
   dictionaries  reading and writing dictionary files
   fields      field and list files (lagrangian fields, internal fields,
               values on a patch)
@@ -27,6 +28,8 @@ imported by name (import foamcase.testing as t):
               wall-impact and closed-box cases, statistics against the oracle
   spinCase, lagrangianCase   the cases of the spin tests and of the
               Lagrangian-module tests (OpenFOAM-13/14 lagrangian clouds)
+  testConstants  the test cases' bead density and the sphere's mass and
+              moment of inertia, defined once
   roughWallOracle, roughnessProfileOracle   the independent numpy oracles
   oracleTesting  the built tools the oracle tests call (tests/oracle)
   bench, openfoamcost   the benchmark scripts' paths, machine description
@@ -42,7 +45,8 @@ SPDX-License-Identifier: GPL-3.0-or-later
 """
 
 from .errors import FoamError, CommandFailed
-from .platforms import (PLATFORMS, SPIN, LIBRARY, Platform, find_library,
+from .platforms import (PLATFORMS, DEFAULT_PLATFORM, FOUNDATION_PLATFORMS,
+                        SPIN, LIBRARY, Platform, find_library,
                         library_search_path, ldd, environment_library)
 from .dictionaries import (NUMBER, read_text, write_text, replace_in_file,
                            strip_header,
@@ -59,7 +63,7 @@ from .cases import Injector, FoamCase
 
 __all__ = [
     "FoamError", "CommandFailed",
-    "PLATFORMS", "SPIN", "LIBRARY", "Platform", "find_library",
+    "PLATFORMS", "DEFAULT_PLATFORM", "FOUNDATION_PLATFORMS", "SPIN", "LIBRARY", "Platform", "find_library",
     "library_search_path", "ldd", "environment_library",
     "NUMBER", "read_text", "write_text", "replace_in_file", "strip_header",
     "foam_header",

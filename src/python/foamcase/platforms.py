@@ -23,8 +23,53 @@ import subprocess
 
 from .errors import FoamError
 
-#: The platforms, first the project's first platform
-PLATFORMS = ("openfoam13", "openfoam14", "openfoam1912")
+#: etc/platforms of the checkout holding this package: the platforms and
+#: the default one, named once for the shell scripts, CMake and Python
+PLATFORMS_FILE = os.path.join(
+    os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
+        os.path.abspath(__file__))))), "etc", "platforms")
+
+
+def read_platforms(path=PLATFORMS_FILE):
+    """(platforms, default platform) of etc/platforms: the shell
+    assignments ROUGHWALL_PLATFORMS="..." and ROUGHWALL_DEFAULT_PLATFORM=..."""
+    values = {}
+    with open(path) as f:
+        for line in f:
+            m = re.match(r'\s*(ROUGHWALL_(?:DEFAULT_)?PLATFORMS?)='
+                         r'"?([^"#]*)"?\s*(#.*)?$', line)
+            if m:
+                values[m.group(1)] = m.group(2).split()
+    platforms = tuple(values.get("ROUGHWALL_PLATFORMS", ()))
+    default = values.get("ROUGHWALL_DEFAULT_PLATFORM", [None])[0]
+    if not platforms or default not in platforms:
+        raise FoamError("%s: no ROUGHWALL_PLATFORMS, or a "
+                        "ROUGHWALL_DEFAULT_PLATFORM not among them" % path)
+    return platforms, default
+
+
+#: The platforms of ./Alltest, and the platform where none is named
+PLATFORMS, DEFAULT_PLATFORM = read_platforms()
+
+
+def is_foundation(name):
+    """openfoam.org's releases (openfoamNN) against ESI's (openfoamYYMM)"""
+    return len(name[len("openfoam"):]) <= 2
+
+
+#: The openfoam.org platforms (foamRun; the field-based Lagrangian)
+FOUNDATION_PLATFORMS = tuple(p for p in PLATFORMS if is_foundation(p))
+
+#: The platform of benchmark results written before their files had a
+#: platform column: every one of them was measured on OpenFOAM-13
+UNRECORDED_PLATFORM = "openfoam13"
+
+
+def display_name(name):
+    """'OpenFOAM-14' for openfoam14, 'OpenFOAM v1912' for openfoam1912"""
+    version = name[len("openfoam"):]
+    return ("OpenFOAM-" + version if is_foundation(name)
+            else "OpenFOAM v" + version)
 
 #: Cloud kinds: does the parcel carry spin (angularMomentum)?
 SPIN = {"colliding": True, "kinematic": False, "DPM": True, "MPPIC": False}
@@ -38,9 +83,10 @@ class Platform:
             raise ValueError("unknown platform %r (%s)"
                              % (name, " or ".join(PLATFORMS)))
         self.name = name
-        self.foundation = name in ("openfoam13", "openfoam14")
+        self.foundation = is_foundation(name)
         #: $WM_PROJECT_VERSION of the platform's environment
-        self.version = name[len("openfoam"):] if self.foundation else "v1912"
+        self.version = (name[len("openfoam"):] if self.foundation
+                        else "v" + name[len("openfoam"):])
         #: Name of the (only) cloud, its properties file
         self.cloud = "cloud" if self.foundation else "kinematicCloud"
         self.properties = self.cloud + "Properties"

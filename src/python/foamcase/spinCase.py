@@ -37,6 +37,7 @@ HERE = os.path.join(os.path.abspath(os.path.join(
 
 from foamcase import testing as t
 import foamcase as fc
+from foamcase import testConstants
 
 #: The case template
 TEMPLATE = os.path.join(HERE, "case")
@@ -45,7 +46,7 @@ TEMPLATE = os.path.join(HERE, "case")
 RHO_F = 1.2
 NU_F = 1.5e-5
 MU_F = RHO_F * NU_F
-RHO_P = 2500.0
+RHO_P = testConstants.RHO_P
 
 #: Centre of the solid-body rotation
 CENTRE = np.array([0.0, 0.05, 0.0])
@@ -53,7 +54,7 @@ CENTRE = np.array([0.0, 0.05, 0.0])
 
 def inertia(d):
     """Moment of inertia of one particle: 0.1 m d^2 = (pi/60) rho_p d^5."""
-    return math.pi / 60 * RHO_P * d**5
+    return testConstants.sphere_inertia(d, RHO_P)
 
 
 def tau_omega(d):

@@ -35,6 +35,7 @@ from foamcase import roughWallOracle
 # One check for every test script (foamcase.checking); the tests call
 # them as t.check, t.TestFailure
 from foamcase.checking import PASSED, TestFailure, check  # noqa: F401
+from foamcase.testConstants import parcel_mass
 from foamcase import (LIBRARY, PLATFORMS, SPIN, FoamCase, FoamError,
                       Injector, Platform, environment_library, find_library,
                       ldd, read_text, write_text)
@@ -363,8 +364,6 @@ CLOSED_BOX = os.path.join(REPO, "tests", "stability", "openfoam", "closedBox")
 #: The box [m]
 BOX = (np.zeros(3), np.full(3, 0.1))
 
-#: Density of the parcels of the closed box (its cloud properties' rho0)
-RHO_PARTICLE = 2500
 
 
 def closed_box_case(platform, path, groups, kind="colliding", seed=1):
@@ -380,7 +379,7 @@ def closed_box_case(platform, path, groups, kind="colliding", seed=1):
         injectors.append(Injector(g["name"],
                                   lo + (hi - lo)*rng.random((g["n"], 3)),
                                   g["U0"], g["d"]))
-        mass += g["n"]*RHO_PARTICLE*math.pi/6*g["d"]**3
+        mass += parcel_mass(g["d"], g["n"])  # the box's rho0: RHO_P
     return case, case.write_injectors(injectors), mass
 
 

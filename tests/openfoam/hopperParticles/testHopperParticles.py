@@ -84,6 +84,7 @@ sys.dont_write_bytecode = True
 
 from foamcase import testing as t
 import foamcase as fc
+from foamcase.testConstants import parcel_mass
 
 #: The tutorial, relative to $WM_PROJECT_DIR
 TUTORIAL = os.path.join("tutorials", "incompressibleFluid", "hopperParticles")
@@ -137,8 +138,8 @@ SYSTEM_OPENFOAM = re.compile(
 
 def parse_args():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("--platform", default="openfoam13",
-                   choices=["openfoam13", "openfoam14"])
+    p.add_argument("--platform", default=fc.DEFAULT_PLATFORM,
+                   choices=fc.FOUNDATION_PLATFORMS)
     p.add_argument("--work", default=".")
     p.add_argument("--rows", type=int, default=6,
                    help="keep the lowest ROWS rows of the tutorial's 3300 "
@@ -478,7 +479,7 @@ def parcels(stage, time_name):
 
 
 def mass(d, n_particle):
-    return float(np.sum(n_particle*RHO0*math.pi/6*d**3))
+    return float(np.sum(parcel_mass(d, n_particle, RHO0)))
 
 
 def reconstructed_count(stage, time_name):

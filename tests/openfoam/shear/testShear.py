@@ -89,6 +89,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 
 from foamcase import spinCase as s
 from foamcase import testing as t
+from foamcase.testConstants import sphere_mass
 import foamcase as fc
 
 #: Shear rate [1/s] of U = (G y, 0, 0)
@@ -141,7 +142,7 @@ CURL = np.array([0.0, 0.0, -G])
 
 
 def mass(d):
-    return math.pi / 6 * RHO_P * d**3
+    return sphere_mass(d, RHO_P)
 
 
 def inertia(d):

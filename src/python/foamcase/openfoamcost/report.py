@@ -16,8 +16,7 @@ from .case import (BASE, L, MODEL_FILE, TUTORIAL_BASE, TUTORIAL_LIB_VARIANTS,
 from .parse import baseline_name
 
 
-PLATFORM_NAMES = {"openfoam13": "OpenFOAM-13", "openfoam14": "OpenFOAM-14",
-                  "openfoam1912": "OpenFOAM v1912"}
+PLATFORM_NAMES = {p: fc.platforms.display_name(p) for p in fc.PLATFORMS}
 #: Tags of results taken on openfoam.org's packaged OpenFOAM (/opt/openfoamNN,
 #: OpenFOAM's own -O3), run by openfoamCost.py directly
 PACKAGE_TAG = "-package"
@@ -420,7 +419,7 @@ def tutorial_table(rows, tag=None):
 
     r0 = rows[0]
     loads = [float(r["load"]) for r in rows]
-    platform = r0.get("platform") or "openfoam13"
+    platform = r0.get("platform") or fc.platforms.UNRECORDED_PLATFORM
     if tag and tag.endswith(PACKAGE_TAG):
         command = ("`PYTHONPATH=src/python etc/openfoamEnv %s /usr/bin/python3 "
                    "benchmarks/scripts/openfoamCost.py --platform %s --tag %s "

@@ -31,7 +31,7 @@ License
 #include "roughWallInput.H"
 #include "foamCompat.H"
 #include "coreBridge.H"
-#include "restitutionCoefficients.hpp"
+#include "effectiveRestitution.hpp"
 
 #include <cmath>
 #include <type_traits>

@@ -32,7 +32,7 @@ License
 #include "roughWallInput.H"
 #include "roughnessAngleInput.H"
 #include "foamCompat.H"
-#include "roughWallLimits.hpp"
+#include "limitsAndUnits.hpp"
 #include "emptyPolyPatch.H"
 #include "wedgePolyPatch.H"
 #include "wallPolyPatch.H"

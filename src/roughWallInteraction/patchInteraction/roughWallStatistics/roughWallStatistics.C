@@ -33,7 +33,7 @@ License
 #include "foamCompat.H"
 #include "Time.H"
 #include "OSspecific.H"
-#include "roughWallLimits.hpp"
+#include "limitsAndUnits.hpp"
 
 #include <algorithm>
 #include <cerrno>

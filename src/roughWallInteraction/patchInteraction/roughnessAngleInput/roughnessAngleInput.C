@@ -30,7 +30,7 @@ License
 #include "roughnessAngleInput.H"
 #include "roughWallInput.H"
 #include "foamCompat.H"
-#include "roughWallLimits.hpp"
+#include "limitsAndUnits.hpp"
 #include "profileFile.hpp"
 #include "OSspecific.H"
 #include "Tuple2.H"

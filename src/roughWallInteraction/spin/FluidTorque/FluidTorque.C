@@ -28,7 +28,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "FluidTorque.H"
-#include "spinModelInput.H"
+#include "spinModels.H"
 #include "roughWallInput.H"
 #include "foamCompat.H"
 #include "coreBridge.H"
@@ -67,7 +67,7 @@ Foam::FluidTorque<CloudType>::FluidTorque
 {
     if constexpr (!withSpin)
     {
-        spinModelInput::fatalNoSpin
+        spinModels::fatalNoSpin
         (
             dict, typeName, owner.name(),
             roughWallCompat::cloudTypeName(owner)
@@ -76,10 +76,10 @@ Foam::FluidTorque<CloudType>::FluidTorque
 
     roughWallInput::checkKeywords(dict, {"type", "coefficient"}, typeName);
 
-    coefficient_ = spinModelInput::readTorqueCoefficient(dict);
+    coefficient_ = spinModels::readTorqueCoefficient(dict);
 
     Info<< "    fluidTorque: coefficient "
-        << spinModelInput::name(coefficient_).c_str() << endl;
+        << spinModels::name(coefficient_).c_str() << endl;
 }
 
 
@@ -152,9 +152,9 @@ void Foam::FluidTorque<CloudType>::postEvolve(ROUGHWALL_EVOLVE_PARAMETERS)
     // (model notes: a correlation outside its range says so)
     clearFields();
 
-    spinModelInput::reportOutsideRange
+    spinModels::reportOutsideRange
     (
-        "fluidTorque", spinModelInput::name(coefficient_),
+        "fluidTorque", spinModels::name(coefficient_),
         roughWall::spin::torqueRange(coefficient_), nEvaluations_, nOutside_
     );
 }

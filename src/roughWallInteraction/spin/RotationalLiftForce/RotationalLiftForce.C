@@ -28,7 +28,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "RotationalLiftForce.H"
-#include "spinModelInput.H"
+#include "spinModels.H"
 #include "roughWallInput.H"
 #include "foamCompat.H"
 #include "coreBridge.H"
@@ -53,7 +53,7 @@ Foam::RotationalLiftForce<CloudType>::RotationalLiftForce
 {
     if constexpr (!withSpin)
     {
-        spinModelInput::fatalNoSpin
+        spinModels::fatalNoSpin
         (
             this->coeffs(), typeName, owner.name(),
             roughWallCompat::cloudTypeName(owner)
@@ -62,10 +62,10 @@ Foam::RotationalLiftForce<CloudType>::RotationalLiftForce
 
     roughWallInput::checkKeywords(this->coeffs(), {"coefficient"}, typeName);
 
-    coefficient_ = spinModelInput::readLiftCoefficient(this->coeffs());
+    coefficient_ = spinModels::readLiftCoefficient(this->coeffs());
 
     Info<< "    rotationalLift: coefficient "
-        << spinModelInput::name(coefficient_).c_str() << endl;
+        << spinModels::name(coefficient_).c_str() << endl;
 }
 
 
@@ -96,9 +96,9 @@ void Foam::RotationalLiftForce<CloudType>::cacheFields(const bool store)
     {
         // The end of an evolve: how much of it the correlation covered
         // (model notes: a correlation outside its range says so)
-        spinModelInput::reportOutsideRange
+        spinModels::reportOutsideRange
         (
-            "rotationalLift", spinModelInput::name(coefficient_),
+            "rotationalLift", spinModels::name(coefficient_),
             roughWall::spin::liftRange(coefficient_), nEvaluations_,
             nOutside_
         );

@@ -149,13 +149,14 @@ def relative_command(command):
 def provenance(r):
     i = r.info
     v0 = r.variants[0]
-    return ("Made by `%s` (in this folder) at commit %s on %s, OpenFOAM %s, %s, %s variants at a "
+    return ("Made by `%s` (in this folder) on %s, OpenFOAM %s, %s, %s variants at a "
             "time; %d parcels of %g um per variant, sampled every 0.05 s from %g s to %g s "
             "(%d snapshots, %d samples per variant), time step %g ms. Files: "
             "`results/summary.csv`, `results/profiles.csv`, `results/spinRatios.csv`, "
-            "`results/carrier.csv`, `results/runInfo`." % (
+            "`results/carrier.csv`, `results/runInfo` (with the commit the run was "
+            "made at)." % (
                 relative_command(i["command"]),
-                i["commit"], i["date"], i["openfoam"], i["machine"], i["jobs"],
+                i["date"], i["openfoam"], i["machine"], i["jobs"],
                 r.s(v0, "nParcels"), 1e6*r.s(v0, "diameter"),
                 r.s(v0, "sampleStart"), r.s(v0, "sampleEnd"),
                 r.s(v0, "snapshots"), r.s(v0, "samples"),
@@ -353,8 +354,9 @@ def time_step(r):
                     worst = (zz, "`%s`, %s, %s" % (v, dt, text))
                 rows.append(["`%s`" % v, dt, text, pm(a, sa, fmt, scale),
                              pm(b, sb, fmt, scale), "%.1f" % zz])
-    cmds = "; ".join("`%s` (commit %s)" % (relative_command(info["command"]), info["commit"])
-                     for _, (_, info) in sorted(r.timestep.items()))
+    cmds = "; ".join("`%s` (`results/timeStep/%s/runInfo`)"
+                     % (relative_command(info["command"]), name)
+                     for name, (_, info) in sorted(r.timestep.items()))
     return (table(["variant", "time step", "statistic", "at 1 ms (results/)",
                    "at this time step", "difference / combined s.e."], rows)
             + "\n\nLargest difference: %.1f combined standard errors (%s), over %d "
@@ -390,8 +392,12 @@ def smoke_test(r):
                c.MARGIN_SE, ", ".join("`%s`" % k for k in c.BAND), c.BAND_SE))
     out = [text]
     for version, rows in sorted(r.smoke.items(), reverse=True):
-        out.append("OpenFOAM-%s (`results/smokeTest-openfoam%s.csv`, %s):\n\n"
-                   % (version, version, rows[0]["run"])
+        # the run's commit stays in the CSV (its "run" column)
+        run = re.sub(r",? ?commit [0-9a-f]+( \(with local changes\))?", "",
+                     rows[0]["run"])
+        out.append("OpenFOAM-%s (`results/smokeTest-openfoam%s.csv`, which "
+                   "records the commit; %s):\n\n"
+                   % (version, version, run)
                    + table(["check", "measured", "required", "margin (bands: "
                             "abs(difference) / band, below 1)"],
                            [[x["check"], x["value"], x["limit"], x["margin"]]

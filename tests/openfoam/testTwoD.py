@@ -18,7 +18,7 @@ Control on the 3-D mesh with the same settings: no such warning, v_z (and
 omega_x) are non-zero for most parcels and the statistics agree with the
 reference WITH lateral tilt.
 
-Usage: test2D.py --platform openfoam13|openfoam1912 --cloud colliding|kinematic
+Usage: testTwoD.py --platform openfoam13|openfoam1912 --cloud colliding|kinematic
            [--parcels N] [--parcels3D N] [--work DIR]
 
 SPDX-License-Identifier: GPL-3.0-or-later

@@ -27,7 +27,7 @@ License
 
 \*---------------------------------------------------------------------------*/
 
-#include "spinModelInput.H"
+#include "spinModels.H"
 #include "roughWallInput.H"
 #include "foamCompat.H"
 #include "OStringStream.H"
@@ -46,7 +46,7 @@ const Foam::wordList torqueNames{"Stokes", "DennisSinghIngham"};
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-roughWall::spin::LiftCoefficient Foam::spinModelInput::readLiftCoefficient
+roughWall::spin::LiftCoefficient Foam::spinModels::readLiftCoefficient
 (
     const dictionary& dict
 )
@@ -68,7 +68,7 @@ roughWall::spin::LiftCoefficient Foam::spinModelInput::readLiftCoefficient
 
 
 roughWall::spin::TorqueCoefficient
-Foam::spinModelInput::readTorqueCoefficient
+Foam::spinModels::readTorqueCoefficient
 (
     const dictionary& dict
 )
@@ -88,7 +88,7 @@ Foam::spinModelInput::readTorqueCoefficient
 }
 
 
-Foam::word Foam::spinModelInput::name
+Foam::word Foam::spinModels::name
 (
     const roughWall::spin::LiftCoefficient c
 )
@@ -97,7 +97,7 @@ Foam::word Foam::spinModelInput::name
 }
 
 
-Foam::word Foam::spinModelInput::name
+Foam::word Foam::spinModels::name
 (
     const roughWall::spin::TorqueCoefficient c
 )
@@ -106,7 +106,7 @@ Foam::word Foam::spinModelInput::name
 }
 
 
-void Foam::spinModelInput::fatalNoSpin
+void Foam::spinModels::fatalNoSpin
 (
     const dictionary& dict,
     const word& model,
@@ -130,7 +130,7 @@ void Foam::spinModelInput::fatalNoSpin
 }
 
 
-void Foam::spinModelInput::reportOutsideRange
+void Foam::spinModels::reportOutsideRange
 (
     const char* model,
     const word& coefficient,

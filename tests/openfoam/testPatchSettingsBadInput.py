@@ -20,7 +20,7 @@ libs entry the run fails with OpenFOAM's "Unknown patchInteractionModel type
 roughWallInteraction" (v1912) or "Unknown patch interaction model type
 roughWallInteraction" (OpenFOAM-13), the troubleshooting symptom of the docs.
 
-Usage: testBadInput.py --platform openfoam13|openfoam1912 [--cloud KIND]
+Usage: testPatchSettingsBadInput.py --platform openfoam13|openfoam1912 [--cloud KIND]
            [--work DIR]
 
 SPDX-License-Identifier: GPL-3.0-or-later

@@ -7,10 +7,10 @@ Control: valid parameters run.  Then one run per bad entry: negative or
 zero values, Rq < Ra, RSm < Ra, flanks steeper than 45 deg, no height,
 no RSm, an unknown keyword inside roughness, roughness not a dictionary,
 and roughnessAngle and roughness together.  Same harness and checks as
-testBadInput.py (FOAM FATAL IO ERROR, the settings file, the patches entry,
+testPatchSettingsBadInput.py (FOAM FATAL IO ERROR, the settings file, the patches entry,
 the keyword, the allowed range; no crash).
 
-Usage: testRoughnessParametersBadInput.py --platform openfoam13|openfoam1912
+Usage: testRoughnessTableBadInput.py --platform openfoam13|openfoam1912
            [--cloud KIND] [--work DIR]
 
 SPDX-License-Identifier: GPL-3.0-or-later
@@ -20,7 +20,7 @@ import os
 
 from foamcase import testing as t
 import foamcase as fc
-import testBadInput as b
+import testPatchSettingsBadInput as b
 
 
 def rough(body, angle=None):

@@ -10,7 +10,7 @@ energy loss equal those of all parcels at the end.  (OpenFOAM-13's functions
 solver reads the frozen carrier at subSolverTime 0: the restart time holds
 no carrier fields.)
 
-Usage: testRestart.py --platform openfoam13|openfoam1912 [--cloud KIND]
+Usage: testStatisticsRestart.py --platform openfoam13|openfoam1912 [--cloud KIND]
            [--parcels N] [--work DIR]
 
 SPDX-License-Identifier: GPL-3.0-or-later

@@ -10,7 +10,7 @@ identical, bit for bit, and so must the parcel count at the end.  The
 per-patch escape/stick counts of roughWallInteraction must equal the parcels
 that escaped/stuck.  none is tested on the outlet, with an end time late
 enough for parcels to reach it (none on a wall is refused: see
-testBadInput.py); a parcel that hits it leaves the domain on both platforms,
+testPatchSettingsBadInput.py); a parcel that hits it leaves the domain on both platforms,
 but they count it differently:
   openfoam1912  KinematicParcel::hitPatch counts a hit on a non-wall patch as
                 a 'Parcel fate: system' escape before calling the model: the
@@ -24,7 +24,7 @@ but they count it differently:
                 object moves the cloud after the write: the step before
                 the last).
 
-Usage: testStandardTypes.py --platform openfoam13|openfoam1912 [--cloud KIND]
+Usage: testPatchSettingsStandardTypes.py --platform openfoam13|openfoam1912 [--cloud KIND]
            [--parcels N] [--work DIR]
 
 SPDX-License-Identifier: GPL-3.0-or-later

@@ -1,12 +1,13 @@
 // roughWallCore: framework-free physics of Derevich's rough-wall collision model.
 // Copyright (C) 2026 roughWallInteraction authors. SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Every default and limit of the model's settings, defined once: used by the
+// Every default and limit of the model's settings, and the degree-radian
+// conversions they are given in, defined once: used by the
 // OpenFOAM adapter's input checks, by roughWallStats's command line and by
 // the documentation.
 #pragma once
 
-#include "roughWallBase.hpp"
+#include "vectorAndPi.hpp"
 
 namespace roughWall
 {

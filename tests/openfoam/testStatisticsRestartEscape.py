@@ -33,14 +33,13 @@ Oracles (none calls roughWallInteraction):
     this case, and is the same for both models.  (docs/testing.md, "Known
     OpenFOAM behaviour".)
 
-Usage: testRestartEscape.py --platform P [--cloud kinematic|colliding]
+Usage: testStatisticsRestartEscape.py --platform P [--cloud kinematic|colliding]
            [--parcels N] [--work DIR]
 
 SPDX-License-Identifier: GPL-3.0-or-later
 """
 
 import argparse
-import math
 import os
 import re
 
@@ -48,7 +47,8 @@ import numpy as np
 
 from foamcase import testing as t
 import foamcase as fc
-from testStatisticsFile import GROUPS, RHO_P, make_case
+from foamcase.testConstants import parcel_mass
+from testStatisticsFile import GROUPS, make_case
 
 RESTART, END = "0.025", "0.05"
 
@@ -105,7 +105,7 @@ def same(a, b, label):
 
 
 def injected(n):
-    return 5 * n, sum(n * RHO_P * math.pi / 6 * d**3 * nP
+    return 5 * n, sum(n * parcel_mass(d, nP)
                       for _, _, nP, d, _ in GROUPS.values())
 
 
@@ -138,7 +138,7 @@ def test():
 
     # The uninterrupted run against its parcels
     parcels = rough.read_cloud(END, ["d", "nParticle", "U"])
-    mass = RHO_P * math.pi / 6 * parcels["d"]**3 * parcels["nParticle"]
+    mass = parcel_mass(parcels["d"], parcels["nParticle"])
     at_rest = np.all(parcels["U"] == 0, axis=1)
     ne, me = last[("outlet", "escape")]
     t.check(ne == n_in - len(mass) and ne > 0
