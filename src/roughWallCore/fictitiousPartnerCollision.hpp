@@ -32,7 +32,7 @@
 // told how often.
 #pragma once
 
-#include "roughWallBase.hpp"
+#include "vectorAndPi.hpp"
 #include "standardNormal.hpp"
 
 #include <Eigen/Core>
