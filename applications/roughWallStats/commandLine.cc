@@ -45,7 +45,8 @@ Model (defaults: glass beads on steel, the paper's d_p = 110 um case):
   --Ra, --Rq, --Rz H  one or more heights: mean, rms, peak-to-valley [m]
   --RSm L          mean width of the profile elements [m]
   --diameter D     particle diameter [m]; Delta = atan(2 pi Rq / max(L, D)),
-                   Rq from Ra or Rz as for a sinusoid if not given
+                   Rq = sqrt(pi/2) Ra or Rz/4.11 if not given (as for
+                   a Gaussian profile, the same Rq as below)
                    (docs/roughWallInteraction.md; Delta printed on stderr)
   --e E            normal restitution of a facet, 0 <= E <= 1      (0.8)
   --mu0 M          static friction, M >= 0                         (0.4)
@@ -102,8 +103,8 @@ Delta(d) of the wall itself (a table, no restitution statistics):
                    its mean, sd, skewness, excess kurtosis, and the estimate
                    atan(2 pi Rq / max(RSm, d)) beside it, for either
   --profile FILE   a measured trace: two columns x z [m] (or '# units XU ZU'),
-                   levelled by its least-squares line; Rq and RSm (zero
-                   up-crossings) measured on it, or
+                   levelled by its least-squares line; Rq and RSm (mean
+                   spacing of its zero up-crossings) measured on it, or
   --Rq/--Ra/--Rz H and --RSm L: a synthetic Gaussian profile with that rms
                    height and Rice width (Rq = sqrt(pi/2) Ra, Rq = Rz/4.11:
                    Gaussian, Rz over sampling lengths of 5 RSm); --seed S
@@ -593,11 +594,9 @@ Options parseCommandLine(int argc, const char* const argv[])
                       ? ", got " + given["--" + error.keyword] : ", missing")
                    + " (or --profile FILE)");
             }
-            // The synthetic profile is Gaussian: its conversions, not the
-            // sinusoid's of equation (1)
-            e.Rq = p.Rq > 0 ? p.Rq
-                 : p.Ra > 0 ? roughWall::rqPerRaGaussian*p.Ra
-                 : p.Rz/roughWall::rzPerRqGaussian;
+            // The Rq that the check above bounds (as for a Gaussian
+            // profile, the synthetic profile's own conversion)
+            e.Rq = p.rmsHeight();
             e.RSm = p.RSm;
             if (p.Rq <= 0)
             {
@@ -675,7 +674,7 @@ Options parseCommandLine(int argc, const char* const argv[])
         note.precision(6);
         note << "Delta = " << o.DeltaDeg << " deg = atan(2 pi Rq / max(RSm, d)) with Rq = "
              << p.rmsHeight() << " m" << (p.Rq > 0 ? "" : " (from " + std::string(
-                    p.Ra > 0 ? "Ra" : "Rz") + ", as for a sinusoid)")
+                    p.Ra > 0 ? "Ra" : "Rz") + ", as for a Gaussian profile)")
              << ", RSm = " << p.RSm << " m, d = " << d << " m ("
              << (d > p.RSm ? "d > RSm: the particle bridges the roughness"
                            : "d <= RSm: the particle meets the flanks")

@@ -22,12 +22,13 @@ EnvelopeResult envelopeStatistics(const EnvelopeSettings& s)
         profile = roughWall::levelledProfile(roughWall::readProfileFile(s.profileFile));
         const roughWall::ProfileParameters q = roughWall::profileParameters(profile);
         result.Rq = q.Rq;
-        // No up-crossing (a flat or monotone trace): no RSm, no estimate
-        result.RSm = q.upCrossings > 0 ? q.RSm : std::nan("");
+        // Fewer than two up-crossings (a flat or monotone trace, or less
+        // than one element): no spacing, so no RSm and no estimate
+        result.RSm = q.RSm > 0 ? q.RSm : std::nan("");
         d << "profile " << s.profileFile << ": " << profile.x.size() << " points over "
           << q.length << " m, levelled by its least-squares line; Rq = " << q.Rq
           << " m, RSm = " << q.RSm << " m (" << q.upCrossings
-          << " zero up-crossings" << (q.upCrossings > 0 ? "" : ": no RSm, d/RSm and the "
+          << " zero up-crossings" << (q.RSm > 0 ? "" : ": no RSm, d/RSm and the "
                                       "closed form are nan") << "); statistics where the sphere lies wholly over the trace";
     }
     else

@@ -24,11 +24,21 @@ constexpr int minMaxFacetCollisions = 1;
 constexpr int maxMaxFacetCollisions = 1000;
 
 //- Profile roughness (roughness { Ra ...; Rq ...; Rz ...; RSm ...; }, SI
-//  units): the rms height Rq that a sinusoidal profile of the same Ra or Rz
-//  has (Ra = 2A/pi, Rq = A/sqrt(2), Rz = 2A for amplitude A), used when Rq
-//  is not given (profileRoughness.hpp)
-constexpr double rqPerRaSinusoid = 1.1107207345395915;   // pi/(2 sqrt 2)
-constexpr double rqPerRzSinusoid = 0.35355339059327373;  // 1/(2 sqrt 2)
+//  units): the rms height Rq of a wall given by Ra or Rz alone is that of a
+//  Gaussian profile, the profile the default envelope builds
+//  (rollingSphereEnvelope.hpp), so that the flank-slope check below, the
+//  synthetic profile and the closed-form estimate use one Rq
+//  (ProfileRoughness::rmsHeight, profileRoughness.hpp):
+//  - Rq = sqrt(pi/2) Ra, exact for Gaussian heights (E|z| = sqrt(2/pi) Rq);
+//  - Rq = Rz/4.11 for Rz measured as the mean peak-to-valley height over
+//    sampling lengths of 5 RSm: an assumption (2 RSm gives 3.21, 10 RSm
+//    4.73; the ratio grows like 2 sqrt(2 ln n) with the number n of
+//    elements per sampling length). Measured on 4 synthetic profiles of
+//    2000 RSm (1596 windows): 4.112; checked in
+//    tests/core/testRollingSphereEnvelope.cc against a random-phase cosine
+//    sum
+constexpr double rqPerRaGaussian = 1.2533141373155003;   // sqrt(pi/2)
+constexpr double rzPerRqGaussian = 4.11;
 
 //- Largest rms profile slope 2 pi Rq/RSm: its roughness angle atan(1) is
 //  maxRoughnessAngleDeg, and the small-slope picture of a profile of

@@ -19,7 +19,8 @@
 //    one of m, mm, um (also µm, micron), nm. E.g. "# units mm um".
 // Errors (ProfileFileError, message "FILE:LINE: what"): the file cannot be
 // opened; a line that is not two finite numbers (NaN, inf, a third column,
-// text); x not strictly increasing; fewer than minPoints points.
+// text); a number a double cannot hold (1e400, 1e-400); x not strictly
+// increasing; fewer than minPoints points.
 #pragma once
 
 #include "rollingSphereEnvelope.hpp"
@@ -82,14 +83,23 @@ inline std::vector<std::string> profileFields(const std::string& line)
     return fields;
 }
 
-//- Parse a whole field as a number; false if it is not one
-inline bool profileNumber(const std::string& text, double& value)
+//- What a field is: a number, text, or a number that a double cannot hold
+//  (strtod's ERANGE: beyond 1.8e308 in magnitude, or nonzero below 2.2e-308,
+//  e.g. 1e400, 1e-400)
+enum class ProfileField { number, text, outOfRange };
+
+//- Parse a whole field as a number
+inline ProfileField profileNumber(const std::string& text, double& value)
 {
     const char* begin = text.c_str();
     char* end = nullptr;
     errno = 0;
     value = std::strtod(begin, &end);
-    return !text.empty() && end == begin + text.size() && errno != ERANGE;
+    if (text.empty() || end != begin + text.size())
+    {
+        return ProfileField::text;
+    }
+    return errno == ERANGE ? ProfileField::outOfRange : ProfileField::number;
 }
 
 //- Metres per unit; 0 if unknown
@@ -156,14 +166,27 @@ inline SampledProfile readProfile
             }
             continue;
         }
+        using detail::ProfileField;
         const std::vector<std::string> f = detail::profileFields(line);
         double x = 0, z = 0;
-        const bool firstIsNumber = !f.empty() && detail::profileNumber(f[0], x);
-        if (!data && !firstIsNumber)
+        const ProfileField fx =
+            f.empty() ? ProfileField::text : detail::profileNumber(f[0], x);
+        if (!data && fx == ProfileField::text)
         {
             continue;   // a header line before the first point
         }
-        if (f.size() != 2 || !firstIsNumber || !detail::profileNumber(f[1], z))
+        const ProfileField fz =
+            f.size() < 2 ? ProfileField::text : detail::profileNumber(f[1], z);
+        if (fx == ProfileField::outOfRange || fz == ProfileField::outOfRange)
+        {
+            throw ProfileFileError
+            (
+                name, lineNo,
+                "a number out of the range of a double (magnitude 2.2e-308 "
+                "to 1.8e308, or 0): '" + line.substr(first) + "'"
+            );
+        }
+        if (f.size() != 2 || fx != ProfileField::number || fz != ProfileField::number)
         {
             throw ProfileFileError
             (

@@ -22,7 +22,10 @@
 // geometric estimate of that picture (docs/roughWallInteraction.md), not
 // an equation taken from that paper.
 //
-// Without Rq, Rq is taken from Ra or Rz as for a sinusoid (limitsAndUnits.hpp).
+// Without Rq, Rq is taken from Ra or Rz as for a Gaussian profile
+// (limitsAndUnits.hpp): the one conversion of the model, used by the
+// flank-slope check, by equation (1) and by the synthetic profile of the
+// envelope (roughnessAngle.hpp).
 // Validity: gentle flanks, 2 pi Rq / RSm <= maxProfileSlope (Delta <= 45
 // deg); Rq >= Ra (true of every profile); RSm > Ra.
 #pragma once
@@ -44,12 +47,14 @@ struct ProfileRoughness
     double Rz = 0;    //!< maximum height (peak to valley)
     double RSm = 0;   //!< mean width of the profile elements
 
-    //- The rms height of equation (1): Rq, else from Ra, else from Rz
+    //- The rms height: Rq, else from Ra, else from Rz, as for a Gaussian
+    //  profile (roughWallLimits.hpp). The only Ra/Rz -> Rq conversion: the
+    //  flank-slope check, equation (1) and the synthetic profile use it
     double rmsHeight() const
     {
         if (Rq > 0) return Rq;
-        if (Ra > 0) return limits::rqPerRaSinusoid*Ra;
-        return limits::rqPerRzSinusoid*Rz;
+        if (Ra > 0) return limits::rqPerRaGaussian*Ra;
+        return Rz/limits::rzPerRqGaussian;
     }
 };
 
@@ -101,7 +106,7 @@ inline ProfileRoughnessError checkProfileRoughness
           + std::to_string(limits::maxProfileSlope)
           + ", roughness angle at most "
           + std::to_string(limits::maxRoughnessAngleDeg)
-          + " deg; Rq from Ra or Rz as for a sinusoid if not given)"
+          + " deg; Rq = sqrt(pi/2) Ra or Rz/4.11 if not given)"
         };
     }
     return {};

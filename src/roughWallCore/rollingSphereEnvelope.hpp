@@ -80,7 +80,8 @@
 // (E|z| = sqrt(2/pi) Rq); Rz has no distribution-free relation to Rq (the
 // mean peak-to-valley height grows with the sampling length): assumed
 // measured over sampling lengths of 5 RSm, where the Gaussian profile's
-// mean peak-to-valley height is rzPerRqGaussian = 4.11 Rq (below).
+// mean peak-to-valley height is limits::rzPerRqGaussian = 4.11 Rq
+// (roughWallLimits.hpp, where both conversions are defined).
 #pragma once
 
 #include "vectorAndPi.hpp"
@@ -482,13 +483,19 @@ inline SampledProfile levelledProfile(const SampledProfile& p)
 }
 
 
-//- Rq and the Rice mean element width of a levelled profile: the rms of z
-//  over the points, and the length per zero up-crossing (ISO 4287's RSm
-//  without its height and width discrimination)
+//- Rq and RSm of a levelled profile: the rms of z over the points, and
+//  ISO 4287's mean width of the profile elements without its height and
+//  width discrimination, the mean spacing of successive zero up-crossings.
+//  Trimmed (a measured trace): the crossings are interpolated linearly
+//  between the samples, and the n crossings within the trace give n - 1
+//  spacings, RSm = (last - first)/(n - 1); the parts before the first and
+//  after the last crossing are no whole elements, and no crossing wraps
+//  past the end. Periodic: the n spacings round the period, RSm = period/n.
 struct ProfileParameters
 {
     double Rq = 0;
-    double RSm = 0;             //!< 0 if z never crosses zero upwards
+    double RSm = 0;             //!< 0 without a spacing (fewer than 2
+                                //!< crossings; periodic: fewer than 1)
     std::size_t upCrossings = 0;
     double length = 0;
 };
@@ -502,27 +509,30 @@ inline ProfileParameters profileParameters(const SampledProfile& p)
     r.Rq = std::sqrt(q/p.z.size());
     const std::size_t n = p.z.size();
     const bool periodic = p.ends == ProfileEnds::periodic;
+    double first = 0, last = 0;
     for (std::size_t i = 0; i + 1 < n + (periodic ? 1 : 0); ++i)
     {
-        r.upCrossings += p.z[i] < 0 && p.z[(i + 1) % n] >= 0;
+        const std::size_t j = (i + 1) % n;
+        if (p.z[i] < 0 && p.z[j] >= 0)
+        {
+            // Where the chord from point i to point j crosses zero
+            const double dx = (j > i ? p.x[j] : p.x[j] + p.period) - p.x[i];
+            last = p.x[i] + dx*p.z[i]/(p.z[i] - p.z[j]);
+            if (r.upCrossings == 0) first = last;
+            ++r.upCrossings;
+        }
     }
     r.length = periodic ? p.period : p.x.back() - p.x.front();
-    r.RSm = r.upCrossings > 0 ? r.length/r.upCrossings : 0;
+    if (periodic)
+    {
+        r.RSm = r.upCrossings > 0 ? r.length/r.upCrossings : 0;
+    }
+    else
+    {
+        r.RSm = r.upCrossings > 1 ? (last - first)/(r.upCrossings - 1) : 0;
+    }
     return r;
 }
-
-
-//- Rq from Ra for a Gaussian profile: E|z| = sqrt(2/pi) Rq, exact
-constexpr double rqPerRaGaussian = 1.2533141373155003;   // sqrt(pi/2)
-
-//- Rz/Rq of the Gaussian profile (autocorrelation above) for Rz measured as
-//  the mean peak-to-valley height over sampling lengths of 5 RSm: an
-//  assumption (2 RSm gives 3.21, 10 RSm 4.73; the ratio grows like
-//  2 sqrt(2 ln n) with the number n of elements per sampling length).
-//  Measured on 4 synthetic profiles of 2000 RSm (1596 windows): 4.112;
-//  checked in tests/core/testRollingSphereEnvelope.cc against a
-//  random-phase cosine sum
-constexpr double rzPerRqGaussian = 4.11;
 
 
 //- Settings of the synthetic Gaussian profile

@@ -195,12 +195,13 @@ public:
 };
 
 //- The synthetic Gaussian profile of a wall given by its parameters (0: not
-//  given): Rq, else Rq of a Gaussian profile of that Ra (exact), else of that
-//  Rz measured over sampling lengths of 5 RSm (rollingSphereEnvelope.hpp)
+//  given): its rms height is the one the flank-slope check bounds
+//  (ProfileRoughness::rmsHeight: Rq, else of a Gaussian profile of that Ra,
+//  exact, else of that Rz over sampling lengths of 5 RSm)
 inline SyntheticProfileSettings gaussianProfileOf(const ProfileRoughness& p)
 {
     SyntheticProfileSettings s;
-    s.Rq = p.Rq > 0 ? p.Rq : p.Ra > 0 ? rqPerRaGaussian*p.Ra : p.Rz/rzPerRqGaussian;
+    s.Rq = p.rmsHeight();
     s.RSm = p.RSm;
     return s;
 }

@@ -150,3 +150,43 @@ TEST(EnvelopeAngleTable, tooShortProfileThrows)
     // half the trace (1e-6) is not above the spacing (1e-6)
     EXPECT_THROW(EnvelopeAngleTable{p}, std::invalid_argument);
 }
+
+
+// A trace steeper than 45 deg must be refused (the adapter stops the run
+// when the table's largest Delta exceeds maxRoughnessAngleDeg), so the
+// table's maximum must be its largest angle, not its smallest. Oracle: a
+// triangle wave of flank slope s = 2 (63.43 deg), period P = 100 um; a
+// sphere of radius r << P lies on a flank except over an arc of width
+// 2 r sin(atan s) at each crest, so its rms tilt is atan(s) to a fraction
+// 2 r sin(atan s)/P (below 1 % at the table's smallest diameter); as the
+// sphere grows it bridges the valleys and Delta falls, so the largest angle
+// is that of the smallest diameter, and every diameter of the table has an
+// angle at most the maximum.
+TEST(EnvelopeAngleTable, steepTraceMaximumIsItsLargestAngle)
+{
+    const double P = 100e-6, s = 2, h = 0.5e-6;
+    SampledProfile p;
+    for (int i = 0; i <= 4000; ++i)
+    {
+        const double x = i*h;
+        const double f = std::fmod(x, P)/P;     // phase in [0, 1)
+        p.x.push_back(x);
+        p.z.push_back(s*P*(f < 0.5 ? f : 1 - f));
+    }
+    const EnvelopeAngleTable table(p, 0, 0);
+    const double steep = std::atan(s);
+    EXPECT_NEAR(table.interpolate(table.dMin()), steep, 0.01*steep);
+    EXPECT_GT(table.maxAngle()*degPerRad, 45) << "the adapter refuses it";
+    EXPECT_NEAR(table.maxAngle(), steep, 0.01*steep);
+    double largest = 0, smallest = 10;
+    for (const double d : rows(table.dMin(), table.dMax()))
+    {
+        largest = std::max(largest, table.interpolate(d));
+        smallest = std::min(smallest, table.interpolate(d));
+    }
+    std::printf("triangle wave: Delta %.4f deg at d = %g m, %.4f deg at d = %g m\n",
+                table.interpolate(table.dMin())*degPerRad, table.dMin(),
+                smallest*degPerRad, table.dMax());
+    EXPECT_EQ(table.maxAngle(), largest);
+    EXPECT_LT(smallest, 0.5*largest) << "the test tells the maximum from the minimum";
+}

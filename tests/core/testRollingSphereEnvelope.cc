@@ -19,6 +19,7 @@
 
 #include "profileFile.hpp"
 #include "rollingSphereEnvelope.hpp"
+#include "roughWallLimits.hpp"
 #include "testSupport.hh"
 
 #include <gtest/gtest.h>
@@ -418,7 +419,7 @@ TEST(roughnessProfile, SyntheticProfileHasRiceWidthAndSlope)
         EXPECT_NEAR(std::sqrt(s2/n)/(2*piTyped*2e-6/60e-6), 1, 0.02) << "seed " << seed;
         EXPECT_NEAR(p.period/up/60e-6, 1, 0.02) << "seed " << seed;
         EXPECT_NEAR(absSum/n/2e-6/std::sqrt(2/piTyped), 1, 0.005) << "seed " << seed;
-        EXPECT_NEAR(rqPerRaGaussian, std::sqrt(piTyped/2), 1e-15);
+        EXPECT_NEAR(limits::rqPerRaGaussian, std::sqrt(piTyped/2), 1e-15);
     }
 }
 
@@ -459,7 +460,7 @@ TEST(roughnessProfile, SyntheticProfileAgreesWithCosineSum)
         const auto mm = std::minmax_element(c.z.begin() + a, c.z.begin() + a + w);
         range += *mm.second - *mm.first;
     }
-    EXPECT_NEAR(range/windows/Rq/rzPerRqGaussian, 1, 0.03);
+    EXPECT_NEAR(range/windows/Rq/limits::rzPerRqGaussian, 1, 0.03);
 
     SyntheticProfileSettings set;
     set.Rq = Rq;
@@ -580,4 +581,162 @@ TEST(roughnessProfile, LevellingAndProfileParameters)
     EXPECT_NEAR(q.Rq, 2e-6/std::sqrt(2.0), 1e-15);
     EXPECT_EQ(q.upCrossings, 1u);
     EXPECT_NEAR(q.RSm, 100e-6, 1e-18);
+}
+
+
+// RSm as ISO 4287 defines it: the mean spacing of successive zero
+// up-crossings within the trace (issue 45: the length divided by the number
+// of crossings gave 95.2 um for 20 periods of 100 um). Oracle: a trimmed
+// trace z = A sin(2 pi x/L + phi), 20 periods of L = 100 um sampled at 0.1
+// um, phi = 1 rad so that the trace starts and ends between crossings: its
+// up-crossings are at x = (m - phi/(2 pi)) L, so their spacings are L
+// exactly; linear interpolation between samples errs by O((2 pi h/L)^3)
+// and the same at every crossing (L/h is an integer): RSm = L to 1e-6.
+TEST(roughnessProfile, RSmOfATrimmedSinusoidIsItsWavelength)
+{
+    const double A = 2e-6, L = 100e-6, h = 0.1e-6, phi = 1;
+    SampledProfile p;
+    p.ends = ProfileEnds::trimmed;
+    for (int i = 0; i < 20000; ++i)
+    {
+        p.x.push_back(i*h);
+        p.z.push_back(A*std::sin(2*piTyped*i*h/L + phi));
+    }
+    // Crossings counted here: up-crossings at (m - phi/(2 pi)) L, m = 1..19
+    // lie inside [0, 1999.9 um]; m = 20 (at 1984.1 um) too: 20 crossings
+    std::size_t count = 0;
+    for (int m = 0; m <= 21; ++m)
+    {
+        const double x = (m - phi/(2*piTyped))*L;
+        count += x > p.x.front() && x < p.x.back();
+    }
+    const ProfileParameters q = profileParameters(p);
+    EXPECT_EQ(q.upCrossings, count);
+    EXPECT_NEAR(q.RSm/L, 1, 1e-6) << "RSm = " << q.RSm;
+    EXPECT_NEAR(q.length, 19999*h, 1e-18);
+}
+
+
+// A trace whose elements differ in width, starting and ending between
+// crossings, the last point below zero and the first above it (so that a
+// crossing wrapping past the end would count). Oracle: z = A sin(2 pi
+// u(x)), u(x) = x/L + b sin(2 pi x/(3.7 L)) (monotone: b 2 pi/3.7 < 1), so
+// the up-crossings are where u is an integer: solved here by bisection on
+// u, RSm = (last - first)/(count - 1); the samples, 2000 per L, interpolate
+// the crossings to O(h^2 |z''/z'|), below 1e-6 of L.
+TEST(roughnessProfile, RSmIsTheMeanSpacingOfUpCrossingsWithinTheTrace)
+{
+    const double A = 1e-6, L = 50e-6, b = 0.3, x0 = 0.1*L, x1 = 12.6*L;
+    const auto u = [&](double x) { return x/L + b*std::sin(2*piTyped*x/(3.7*L)); };
+    const auto z = [&](double x) { return A*std::sin(2*piTyped*u(x)); };
+    SampledProfile p;
+    p.ends = ProfileEnds::trimmed;
+    const int n = 25001;
+    for (int i = 0; i < n; ++i)
+    {
+        const double x = x0 + (x1 - x0)*i/(n - 1);
+        p.x.push_back(x);
+        p.z.push_back(z(x));
+    }
+    ASSERT_GT(p.z.front(), 0);
+    ASSERT_LT(p.z.back(), 0) << "the wrapping pair (last, first) is an up-crossing";
+
+    // The up-crossings: u(x) = m for the integers m in (u(x0), u(x1))
+    std::vector<double> crossings;
+    for (long m = long(std::ceil(u(x0))); m < u(x1); ++m)
+    {
+        double lo = x0, hi = x1;
+        for (int k = 0; k < 200; ++k)
+        {
+            const double mid = 0.5*(lo + hi);
+            (u(mid) < m ? lo : hi) = mid;
+        }
+        crossings.push_back(0.5*(lo + hi));
+    }
+    ASSERT_GE(crossings.size(), 3u);
+    const double spacing =
+        (crossings.back() - crossings.front())/(crossings.size() - 1);
+    // The spacings differ: the mean is no length per crossing
+    ASSERT_GT(std::fabs(spacing - (x1 - x0)/crossings.size()), 0.01*spacing);
+
+    const ProfileParameters q = profileParameters(p);
+    EXPECT_EQ(q.upCrossings, crossings.size());
+    EXPECT_NEAR(q.RSm/spacing, 1, 1e-6)
+        << "RSm = " << q.RSm << ", mean spacing " << spacing;
+
+    // Periodic (the synthetic profile): the crossings' spacings round the
+    // period, typed here for the sinusoid of 1000 points per period
+    SampledProfile s = sinusoid(2e-6, 100e-6, 1000);
+    for (double& zi : s.z) zi -= 0.5e-6;   // crossings off the samples
+    const ProfileParameters qs = profileParameters(s);
+    EXPECT_EQ(qs.upCrossings, 1u);
+    EXPECT_NEAR(qs.RSm, 100e-6, 1e-18);
+
+    // One crossing in a trimmed trace: no spacing, no RSm
+    SampledProfile one;
+    for (int i = 0; i < 20; ++i)
+    {
+        one.x.push_back(i*1e-6);
+        one.z.push_back((i - 9.5)*1e-7);
+    }
+    const ProfileParameters q1 = profileParameters(one);
+    EXPECT_EQ(q1.upCrossings, 1u);
+    EXPECT_EQ(q1.RSm, 0);
+}
+
+
+// The reader's other forms of the units line and the comments (the header
+// of profileFile.hpp): '//' and '%' comment lines carry a units line as '#'
+// does, 'units:' as 'units', 'micron' and 'µm' (UTF-8) as um. Oracle: the
+// points typed here in metres; a units line ignored would leave them in mm
+// and um read as metres, 1e3 and 1e6 times too large. Numbers a double
+// cannot hold (1e400, 1e-400) are refused naming the line, also as the
+// first field of the first line (where a text field would be a header).
+TEST(roughnessProfile, ProfileFileUnitFormsAndOutOfRangeNumbers)
+{
+    const auto read = [](const std::string& text)
+    {
+        std::istringstream in(text);
+        return readProfile(in, "trace.txt", 3);
+    };
+    const auto error = [&](const std::string& text)
+    {
+        return messageOf([&] { read(text); });
+    };
+    const std::vector<double> x{0, 1e-3, 2e-3}, z{1e-6, 2e-6, -1e-6};
+    for (const std::string units :
+         {
+             "// units mm um\n", "//units mm um\n", "  // units mm um\n",
+             "% units mm um\n", "# units: mm um\n", "# units mm micron\n",
+             "# units mm \xC2\xB5m\n", "// units: mm \xC2\xB5m\n"
+         })
+    {
+        const SampledProfile p = read(units + "0 1\n1 2\n2 -1\n");
+        ASSERT_EQ(p.x.size(), 3u) << units;
+        for (std::size_t i = 0; i < 3; ++i)
+        {
+            EXPECT_NEAR(p.x[i], x[i], 1e-18) << units;
+            EXPECT_NEAR(p.z[i], z[i], 1e-21) << units;
+        }
+    }
+    // x in micron, z in nm
+    const SampledProfile m = read("% units micron nm\n0 1\n1 2\n2 -1\n");
+    EXPECT_NEAR(m.x[2], 2e-6, 1e-21);
+    EXPECT_NEAR(m.z[1], 2e-9, 1e-24);
+    // A comment line that is no units line changes nothing
+    const SampledProfile c = read("// mm um\n% um um\n0 1\n1 2\n2 -1\n");
+    EXPECT_EQ(c.x[2], 2.0);
+    EXPECT_EQ(c.z[0], 1.0);
+
+    for (const auto& [text, line] : std::vector<std::pair<std::string, int>>
+         {
+             {"0 1\n1 1e400\n2 3\n", 2}, {"0 1\n1 1e-400\n2 3\n", 2},
+             {"0 1\n1e400 2\n2 3\n", 2}, {"0 1\n1 -1e400\n2 3\n", 2},
+             {"1e-400 1\n1 2\n2 3\n", 1}, {"x z\n1e400 1\n1 2\n2 3\n", 2}
+         })
+    {
+        const std::string e = error(text);
+        EXPECT_EQ(e.rfind("trace.txt:" + std::to_string(line)
+                        + ": a number out of the range of a double", 0), 0u) << e;
+    }
 }

@@ -15,7 +15,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <vector>
 
@@ -123,4 +125,82 @@ TEST(RoughnessAngle, GaussianProfileTakesRqElseRaElseRz)
     p.Rq = 3e-6;
     EXPECT_EQ(gaussianProfileOf(p).Rq, 3e-6);
     EXPECT_EQ(gaussianProfileOf(p).RSm, 100e-6);
+}
+
+
+// One Ra/Rz -> Rq conversion for the flank-slope check and the synthetic
+// profile (issue 45: the check converted as for a sinusoid, the profile as
+// for a Gaussian, so a wall given by Ra could pass the check and get a
+// profile of rms slope 1.13). A wall at the limit of the check must give a
+// profile at that limit, rms slope 2 pi Rq/RSm = 1 (45 deg), and the profile
+// must have the Ra or Rz the wall was given. Oracles, none from the code
+// under test: the limit found by bisection on the check's verdict alone;
+// the profile's rms slope (its chords' slopes, periodic), mean |z| and
+// mean peak-to-valley height over windows of 5 RSm measured here; stated
+// tolerances: 3 % on the slope and Ra (seed spread of the 5000-RSm
+// profile, about 0.6 %), 4 % on Rz (its window-to-window scatter and the
+// 4.11 assumption's 3 %).
+TEST(RoughnessAngle, WallAtTheSlopeLimitGivesAProfileWithinIt)
+{
+    const double RSm = 60e-6;
+    for (const bool byRa : {true, false})
+    {
+        // The largest Ra (or Rz) the check accepts at this RSm
+        const auto accepted = [&](const double height)
+        {
+            ProfileRoughness p;
+            (byRa ? p.Ra : p.Rz) = height;
+            p.RSm = RSm;
+            return checkProfileRoughness(p, byRa, false, !byRa).keyword.empty();
+        };
+        double lo = 1e-9, hi = RSm;
+        ASSERT_TRUE(accepted(lo));
+        ASSERT_FALSE(accepted(hi));
+        for (int k = 0; k < 100; ++k)
+        {
+            const double mid = 0.5*(lo + hi);
+            (accepted(mid) ? lo : hi) = mid;
+        }
+        ProfileRoughness wall;
+        (byRa ? wall.Ra : wall.Rz) = lo;
+        wall.RSm = RSm;
+        const SampledProfile z = syntheticGaussianProfile(gaussianProfileOf(wall));
+
+        const std::size_t n = z.z.size();
+        const double h = z.x[1] - z.x[0];
+        double slope2 = 0, absSum = 0;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            const double dz = z.z[(i + 1) % n] - z.z[i];
+            slope2 += dz*dz/(h*h);
+            absSum += std::fabs(z.z[i]);
+        }
+        const double rmsSlope = std::sqrt(slope2/n);
+        std::printf("%s at the limit: %.6g m, profile rms slope %.4f, Ra %.4g m\n",
+                    byRa ? "Ra" : "Rz", lo, rmsSlope, absSum/n);
+        EXPECT_LE(rmsSlope, 1.03) << (byRa ? "Ra" : "Rz") << " at the limit";
+        EXPECT_GE(rmsSlope, 0.97) << (byRa ? "Ra" : "Rz")
+            << " at the limit: the check is no stricter than the profile";
+        if (byRa)
+        {
+            EXPECT_NEAR(absSum/n/lo, 1, 0.03) << "the profile's Ra";
+        }
+        else
+        {
+            // Mean peak-to-valley height over windows of 5 RSm
+            const std::size_t w = static_cast<std::size_t>(5*RSm/h);
+            double range = 0;
+            std::size_t windows = 0;
+            for (std::size_t start = 0; start + w <= n; start += w, ++windows)
+            {
+                const auto [mn, mx] = std::minmax_element
+                (
+                    z.z.begin() + start, z.z.begin() + start + w
+                );
+                range += *mx - *mn;
+            }
+            std::printf("Rz of the profile %.4g m\n", range/windows);
+            EXPECT_NEAR(range/windows/lo, 1, 0.04) << "the profile's Rz";
+        }
+    }
 }

@@ -12,7 +12,10 @@ stale: the check fails before anything is built.
 Levels:
   core      the framework-free core (src/roughWallCore): the copy is
             configured with CMake and only the targets of each fault are
-            rebuilt (ctest label "mutation", part of the default run)
+            rebuilt, and of those only the files that depend on the fault's
+            own edits (the build folder of the unchanged copy is put back
+            after each fault; ctest label "mutation", part of the default
+            run)
   openfoam  the OpenFOAM adapter (src/roughWallInteraction): the library is
             built by wmake into a private FOAM_USER_LIBBIN (a private HOME in
             the copy) and the OpenFOAM-level tests of one platform are run
@@ -276,9 +279,17 @@ class Builder:
                    self.log, env=self.env, cwd=self.tree) == 0
 
     def _built(self):
-        """wmake's output of the copy: its objects and dependency files
-        (Make/<WM_OPTIONS>) and the library in the private
-        FOAM_USER_LIBBIN"""
+        """The build output of the copy. Core: CMake's build folder (objects,
+        dependency files, executables; not ctest's Testing/). OpenFOAM:
+        wmake's objects and dependency files (Make/<WM_OPTIONS>) and the
+        library in the private FOAM_USER_LIBBIN"""
+        if self.level == "core":
+            paths = []
+            for folder, folders, files in os.walk(self.build):
+                if folder == self.build:
+                    folders[:] = [f for f in folders if f != "Testing"]
+                paths += [os.path.join(folder, name) for name in files]
+            return paths
         paths = []
         make = os.path.join(self.tree, "Make")
         for folder, _, files in os.walk(make):
@@ -291,14 +302,12 @@ class Builder:
         return paths
 
     def snapshot(self):
-        """Keep wmake's output of the unchanged copy (OpenFOAM level).
+        """Keep the build output of the unchanged copy (both levels).
         Without it, the build of each fault also recompiled every file that
         the previous fault touched (its restored text had a new mtime): with
         reset() after each fault, a fault's build compiles only the files
         that depend on its own edits, as an incremental build of the
         unchanged tree with that one edit would"""
-        if self.level != "openfoam":
-            return
         self.pristine = os.path.join(os.path.dirname(self.tree), "pristine")
         shutil.rmtree(self.pristine, ignore_errors=True)
         for path in self._built():
@@ -307,10 +316,8 @@ class Builder:
             shutil.copy2(path, target)
 
     def reset(self):
-        """Put back wmake's output of the unchanged copy, mtimes included;
+        """Put back the build output of the unchanged copy, mtimes included;
         output that the unchanged build did not have is removed"""
-        if self.level != "openfoam":
-            return False
         for path in self._built():
             kept = os.path.join(self.pristine, os.path.relpath(path, "/"))
             if not os.path.exists(kept):

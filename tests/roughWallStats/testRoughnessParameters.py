@@ -2,8 +2,8 @@
 """roughWallStats with the wall's profile parameters and a diameter.
 
 Oracle: equation (1) of docs/roughWallInteraction.md, typed here,
-Delta = atan(2 pi Rq / max(RSm, d)) (Rq = pi/(2 sqrt 2) Ra, or Rz/(2 sqrt 2),
-for a sinusoid when Rq is not given; Ra before Rz).  For diameters below and above the regime change
+Delta = atan(2 pi Rq / max(RSm, d)) (Rq = sqrt(pi/2) Ra, or Rz/4.11, as for
+a Gaussian profile when Rq is not given; Ra before Rz).  For diameters below and above the regime change
 d = RSm the table printed with --Rq/--Ra, --RSm, --diameter must equal the
 table printed with --Delta set to the hand-computed angle (to 1e-9
 relative: the two differ only by the rounding of the degrees), and stderr
@@ -44,16 +44,15 @@ def main():
         (["--Rq", "2e-6", "--RSm", "60e-6"], 195e-6,
          math.degrees(math.atan(2 * math.pi * 2e-6 / 195e-6))),
         (["--Ra", "1.5e-6", "--RSm", "40e-6"], 110e-6,
-         math.degrees(math.atan(2 * math.pi * math.pi / (2 * math.sqrt(2))
+         math.degrees(math.atan(2 * math.pi * math.sqrt(math.pi / 2)
                                 * 1.5e-6 / 110e-6))),
-        # Rz alone: Rq = Rz/(2 sqrt 2)
+        # Rz alone: Rq = Rz/4.11
         (["--Rz", "6e-6", "--RSm", "40e-6"], 30e-6,
-         math.degrees(math.atan(2 * math.pi * 6e-6 / (2 * math.sqrt(2))
-                                / 40e-6))),
+         math.degrees(math.atan(2 * math.pi * 6e-6 / 4.11 / 40e-6))),
         # Ra and Rz without Rq: Rq from Ra (Rz, inconsistent with Ra here,
-        # would give 7.07e-6 instead of 1.11e-6)
+        # would give 4.87e-6 instead of 1.25e-6)
         (["--Ra", "1e-6", "--Rz", "20e-6", "--RSm", "40e-6"], 30e-6,
-         math.degrees(math.atan(2 * math.pi * math.pi / (2 * math.sqrt(2))
+         math.degrees(math.atan(2 * math.pi * math.sqrt(math.pi / 2)
                                 * 1e-6 / 40e-6))),
     ]
     for options, d, delta in cases:
@@ -85,10 +84,10 @@ def main():
         (["--Ra", "2e-6", "--RSm", "60e-6", "--diameter", "0"], "--diameter"),
         (["--Delta", "5", "--Ra", "2e-6", "--RSm", "60e-6",
           "--diameter", "1e-4"], "--Delta"),
-        # Flanks steeper than 45 deg with Rq from Ra (2 pi 1.11e-6/6e-6 =
-        # 1.16) or from Rz (2 pi 1.06e-6/6e-6 = 1.11)
+        # Flanks steeper than 45 deg with Rq from Ra (2 pi 1.25e-6/6e-6 =
+        # 1.31) or from Rz (2 pi 1.22e-6/6e-6 = 1.27)
         (["--Ra", "1e-6", "--RSm", "6e-6", "--diameter", "1e-4"], "--RSm"),
-        (["--Rz", "3e-6", "--RSm", "6e-6", "--diameter", "1e-4"], "--RSm"),
+        (["--Rz", "5e-6", "--RSm", "6e-6", "--diameter", "1e-4"], "--RSm"),
     ]:
         rc, _, err = run(binary, *options)
         expect(rc == 2 and named in err,

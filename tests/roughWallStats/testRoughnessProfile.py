@@ -17,6 +17,14 @@ Oracles (none calls the tool's code for its expectation):
              typed here; --Ra, --Rz give the table of --Rq = sqrt(pi/2) Ra,
              Rz / 4.11;
   badInput   exit code 2 and the file and line (or option) named;
+  rsm        ISO 4287's RSm, the mean spacing of successive zero
+             up-crossings: a trace z = A cos(2 pi x / L) over [-10.3 L,
+             10.3 L] (even, so its least-squares line is its mean, which
+             moves every crossing alike), starting and ending between
+             crossings: 21 up-crossings, RSm = L to 1e-6 (the length per
+             crossing would be 0.98 L); the closed-form column is
+             atan(2 pi Rq / max(L, d)) with Rq of the levelled samples
+             computed here;
   plot       --plot writes a PNG.
 
 Usage: testRoughnessProfile.py --binary PATH --work DIR --case NAME
@@ -200,17 +208,45 @@ def plot(binary, work):
     expect(ok, "--plot writes a PNG (%s)" % err.strip()[:200])
 
 
+def rsm(binary, work):
+    L, A, h, half = 100e-6, 2e-6, 0.1e-6, 10300
+    x = np.arange(-half, half + 1) * h
+    z = A * np.cos(2 * math.pi * x / L)
+    path = os.path.join(work, "cosine.txt")
+    write(path, ["# units um um"] + ["%.17g %.17g" % (xi * 1e6, zi * 1e6)
+                                     for xi, zi in zip(x, z)])
+    # Levelled here: the least-squares line (zero slope: even trace)
+    slope, mean = np.polyfit(x, z, 1)
+    Rq = math.sqrt(np.mean((z - mean - slope * x) ** 2))
+    ds = (20e-6, 300e-6)
+    rc, out, err = run(binary, "--profile", path, "--d", "%r,%r" % ds, "--digits", 17)
+    expect(rc == 0, "cosine trace: runs (%s)" % err.strip()[:200])
+    if rc != 0:
+        return
+    rows = table(out)
+    for d, row in zip(ds, rows):
+        RSm = d / row["d_over_RSm"]
+        expect(abs(RSm / L - 1) < 1e-6,
+               "cosine trace d = %g: RSm %.12g m = L = %g m (1e-6)" % (d, RSm, L))
+        closed = math.degrees(math.atan(2 * math.pi * Rq / max(L, d)))
+        expect(abs(row["closed_form_deg"] / closed - 1) < 1e-6,
+               "cosine trace d = %g: closed form %.9f deg = %.9f deg (RSm = L)"
+               % (d, row["closed_form_deg"], closed))
+    expect("21 zero up-crossings" in err, "cosine trace: stderr counts 21 up-crossings")
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--binary", required=True)
     parser.add_argument("--work", required=True)
     parser.add_argument("--case", required=True,
-                        choices=["sinusoid", "flat", "synthetic", "badInput", "plot"])
+                        choices=["sinusoid", "flat", "synthetic", "badInput", "plot",
+                                 "rsm"])
     args = parser.parse_args()
     work = os.path.join(args.work, args.case)
     os.makedirs(work, exist_ok=True)
     {"sinusoid": sinusoid, "flat": flat, "synthetic": synthetic,
-     "badInput": bad_input, "plot": plot}[args.case](args.binary, work)
+     "badInput": bad_input, "plot": plot, "rsm": rsm}[args.case](args.binary, work)
     if finish():
         return 1
     print("all checks passed")
