@@ -54,6 +54,34 @@ inline void Foam::RoughWallInteraction<CloudType>::watchWallVelocity
 
 
 template<class CloudType>
+void Foam::RoughWallInteraction<CloudType>::warnInPlaneSpin
+(
+    const polyPatch& pp,
+    const vector& L
+)
+{
+    bool inPlane = false;
+    for (direction cmpt = 0; cmpt < vector::nComponents; ++cmpt)
+    {
+        inPlane = inPlane || (cmpt != emptyComponent_ && L[cmpt] != 0);
+    }
+
+    if (!inPlane || inPlaneSpinWarned_[pp.index()])
+    {
+        return;
+    }
+    inPlaneSpinWarned_[pp.index()] = true;
+
+    WarningInFunction
+        << "Patch " << pp.name() << ": a parcel arrives with spin about an"
+        << " axis in the plane of this 2-D case (angular momentum " << L
+        << "). The rough wall keeps only the spin about "
+        << vector::componentNames[emptyComponent_] << " and sets the"
+        << " other components to zero. Warned once per patch." << endl;
+}
+
+
+template<class CloudType>
 void Foam::RoughWallInteraction<CloudType>::rebound
 (
     parcelType& p,
@@ -145,6 +173,7 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
             const vector& L = p.angularMomentum();
             if (emptyCmpt >= 0)
             {
+                warnInPlaneSpin(pp, L);
                 omega[emptyCmpt] = L[emptyCmpt]/I;
             }
             else
@@ -356,7 +385,8 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
     file_(),
     wallSpeedSqr_(stats_.nPatches(), scalar(-1)),
     wallSpeedSqrReported_(stats_.nPatches(), scalar(-1)),
-    stored_(stats_)
+    stored_(stats_),
+    inPlaneSpinWarned_(stats_.nPatches(), false)
 {
     readStored();
 
@@ -435,7 +465,8 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
     file_(),
     wallSpeedSqr_(pim.wallSpeedSqr_),
     wallSpeedSqrReported_(pim.wallSpeedSqrReported_),
-    stored_(pim.stored_)
+    stored_(pim.stored_),
+    inPlaneSpinWarned_(pim.inPlaneSpinWarned_)
 {}
 
 
