@@ -54,30 +54,57 @@ inline void Foam::RoughWallInteraction<CloudType>::watchWallVelocity
 
 
 template<class CloudType>
-void Foam::RoughWallInteraction<CloudType>::warnInPlaneSpin
+void Foam::RoughWallInteraction<CloudType>::watchInPlaneSpin
 (
-    const polyPatch& pp,
+    const label patchi,
     const vector& L
 )
 {
-    bool inPlane = false;
+    if (inPlaneSpin_[patchi] != 0)
+    {
+        // Seen since the last report, or warned of
+        return;
+    }
     for (direction cmpt = 0; cmpt < vector::nComponents; ++cmpt)
     {
-        inPlane = inPlane || (cmpt != emptyComponent_ && L[cmpt] != 0);
+        if (cmpt != emptyComponent_ && L[cmpt] != 0)
+        {
+            inPlaneSpin_[patchi] = 1;
+        }
     }
+}
 
-    if (!inPlane || inPlaneSpinWarned_[pp.index()])
+
+template<class CloudType>
+void Foam::RoughWallInteraction<CloudType>::reportInPlaneSpin()
+{
+    if (emptyComponent_ < 0 || !withSpin)
     {
         return;
     }
-    inPlaneSpinWarned_[pp.index()] = true;
 
-    WarningInFunction
-        << "Patch " << pp.name() << ": a parcel arrives with spin about an"
-        << " axis in the plane of this 2-D case (angular momentum " << L
-        << "). The rough wall keeps only the spin about "
-        << vector::componentNames[emptyComponent_] << " and sets the"
-        << " other components to zero. Warned once per patch." << endl;
+    // Gathered from every processor: a non-master warning would be lost
+    scalarList seen(inPlaneSpin_);
+    roughWallCompat::maxOverProcessors(seen);
+
+    forAll(seen, patchi)
+    {
+        if (seen[patchi] > 0 && inPlaneSpin_[patchi] >= 0)
+        {
+            WarningInFunction
+                << "Patch " << stats_.patchName(patchi) << ": parcels arrive"
+                << " with spin about an axis in the plane of this 2-D case."
+                << " The rough wall keeps only the spin about "
+                << vector::componentNames[emptyComponent_] << " and sets"
+                << " the other components to zero. Warned once per patch."
+                << endl;
+        }
+        if (seen[patchi] > 0)
+        {
+            // Warned: never again
+            inPlaneSpin_[patchi] = -1;
+        }
+    }
 }
 
 
@@ -173,7 +200,7 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
             const vector& L = p.angularMomentum();
             if (emptyCmpt >= 0)
             {
-                warnInPlaneSpin(pp, L);
+                watchInPlaneSpin(pp.index(), L);
                 omega[emptyCmpt] = L[emptyCmpt]/I;
             }
             else
@@ -386,7 +413,7 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
     wallSpeedSqr_(stats_.nPatches(), scalar(-1)),
     wallSpeedSqrReported_(stats_.nPatches(), scalar(-1)),
     stored_(stats_),
-    inPlaneSpinWarned_(stats_.nPatches(), false)
+    inPlaneSpin_(stats_.nPatches(), scalar(0))
 {
     readStored();
 
@@ -466,7 +493,7 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
     wallSpeedSqr_(pim.wallSpeedSqr_),
     wallSpeedSqrReported_(pim.wallSpeedSqrReported_),
     stored_(pim.stored_),
-    inPlaneSpinWarned_(pim.inPlaneSpinWarned_)
+    inPlaneSpin_(pim.inPlaneSpin_)
 {}
 
 
@@ -544,6 +571,7 @@ void Foam::RoughWallInteraction<CloudType>::info(ROUGHWALL_INFO_PARAMETERS)
     );
 
     reportWallVelocity(ROUGHWALL_INFO_STREAM);
+    reportInPlaneSpin();
 
     if (this->writeTime())
     {
