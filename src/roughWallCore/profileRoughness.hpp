@@ -48,7 +48,7 @@ struct ProfileRoughness
     double RSm = 0;   //!< mean width of the profile elements
 
     //- The rms height: Rq, else from Ra, else from Rz, as for a Gaussian
-    //  profile (roughWallLimits.hpp). The only Ra/Rz -> Rq conversion: the
+    //  profile (limitsAndUnits.hpp). The only Ra/Rz -> Rq conversion: the
     //  flank-slope check, equation (1) and the synthetic profile use it
     double rmsHeight() const
     {

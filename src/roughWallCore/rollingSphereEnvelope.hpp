@@ -81,7 +81,7 @@
 // mean peak-to-valley height grows with the sampling length): assumed
 // measured over sampling lengths of 5 RSm, where the Gaussian profile's
 // mean peak-to-valley height is limits::rzPerRqGaussian = 4.11 Rq
-// (roughWallLimits.hpp, where both conversions are defined).
+// (limitsAndUnits.hpp, where both conversions are defined).
 #pragma once
 
 #include "vectorAndPi.hpp"

@@ -91,7 +91,7 @@ TEST(roughnessParameters, CacheGivesTheUncachedValueInAnyOrder)
 
 
 // Rq from Ra or Rz as for a Gaussian profile (the one conversion,
-// roughWallLimits.hpp). Gaussian heights drawn here (10^6, fixed seed): Rq
+// limitsAndUnits.hpp). Gaussian heights drawn here (10^6, fixed seed): Rq
 // from their measured Ra must equal their measured Rq (statistical
 // tolerance 0.3 %, 4 sd of the ratio's 0.076 %); Rz = 4.11 Rq typed in.
 // The flank angle: a sinusoid y = A sin(2 pi x / L) of that Rq, sampled,

@@ -19,7 +19,7 @@
 
 #include "profileFile.hpp"
 #include "rollingSphereEnvelope.hpp"
-#include "roughWallLimits.hpp"
+#include "limitsAndUnits.hpp"
 #include "testSupport.hh"
 
 #include <gtest/gtest.h>

@@ -38,6 +38,18 @@ kinematicParticle cloud without forces (src/python/foamcase/lagrangianCase.py).
     groups (2000 per angle, Delta 8 deg) end identical (bit for bit) in
     both runs, and their rebounds are random: the draws depend on the
     particle and the step, not on how often the patch is evaluated.
+--test movingWall: the whole mesh translates at Uw = (-0.5, 0, 0) (a mover
+    of the test's own, tests/openfoam/translatingMesh, built on first use:
+    the project's OpenFOAM-13 and -14 have no mesh-motion library), so
+    that lowerWall moves along itself; roughnessAngle 0 (a smooth wall),
+    e 0.8, mu0 = muD = 0.4, the three flat-wall groups (500 each, from
+    y = 4.7 mm: none hits the wall at the end of a time step).  The
+    rebound is the hard-sphere one relative to the wall, written in this
+    test: V' = U' - Uw, then rolling (|V'_t| <= 3.5 mu0 (1 + e) |V'_n|:
+    V''_t = 5/7 V'_t) or sliding (V''_t = V'_t - muD (1 + e) |V'_n|),
+    V''_n = e |V'_n|, U'' = V'' + Uw: 10 and 30 deg slide and 60 deg rolls
+    relative to the wall (30 deg would roll relative to the mesh's frame).
+    Every particle's U'' to 1e-9 m/s.
 --test badInput: e 1.5, muD > mu0, an unknown keyword, a non-positive d,
     and neither roughnessAngle nor roughness: each stops with a message
     naming the file, the keyword and the allowed values; a cloud without a
@@ -72,7 +84,7 @@ def parse_args():
     t.add_platform_args(p, kinds=False)
     p.add_argument("--test", required=True,
                    choices=["flatWall", "smooth", "energy", "closedBox",
-                            "badInput", "outerCorrectors"])
+                            "badInput", "outerCorrectors", "movingWall"])
     p.add_argument("--particles", type=int, default=10000)
     p.add_argument("--roughness", default="8")
     p.add_argument("--twoD", action="store_true")
@@ -358,6 +370,82 @@ def test_outer_correctors(args, work):
             % (err_U, err_c))
 
 
+def translating_mesh_library(work):
+    """libroughWallTranslatingMesh.so for this platform (built once with
+    wmake beside the test's work folder, from a copy of the source)."""
+    root = os.path.join(os.path.dirname(work), "translatingMesh")
+    lib = os.path.join(root, "lib", "libroughWallTranslatingMesh.so")
+    source = os.path.join(t.HERE, "translatingMesh")
+    stamp = os.path.join(root, "source")
+    text = "".join(fc.read_text(os.path.join(dirpath, f))
+                   for dirpath, _, files in sorted(os.walk(source))
+                   for f in sorted(files))
+    if os.path.exists(lib) and os.path.exists(stamp) \
+            and fc.read_text(stamp) == text:
+        return lib
+    if os.path.exists(root):
+        shutil.rmtree(root)
+    shutil.copytree(source, os.path.join(root, "src"))
+    env = dict(os.environ, ROUGHWALL_TEST_LIBBIN=os.path.join(root, "lib"))
+    import subprocess
+    out = subprocess.run(["wmake", "libso"], cwd=os.path.join(root, "src"),
+                         env=env, stdout=subprocess.PIPE,
+                         stderr=subprocess.STDOUT, universal_newlines=True)
+    if out.returncode != 0 or not os.path.exists(lib):
+        raise t.TestFailure("building the test's mesh mover failed:\n%s"
+                            % out.stdout[-3000:])
+    fc.write_text(stamp, text)
+    return lib
+
+
+def test_moving_wall(args, work):
+    lib = translating_mesh_library(work)
+    rng = np.random.default_rng(7)
+    n = 500
+    groups = flat_wall_groups(n, rng)
+    # From y = 4.7 mm: no hit at the end of a time step (from 5 mm the
+    # 30 deg group, U_y = -0.5 m/s, reaches the wall at t = 0.01 exactly,
+    # where OpenFOAM-14 hands a few of them a wall velocity of zero)
+    for g in groups:
+        g.positions[:, 1] = 0.0047
+    e, mu0, muD = 0.8, 0.4, 0.4
+    Uw = np.array([-0.5, 0.0, 0.0])
+    case = lc.make_case(os.path.join(work, "moving"), groups, ESCAPE,
+                        lowerWall=ROUGH % "0")
+    lc.write(case, "constant/dynamicMeshDict", "dictionary",
+             "mover\n{\n    type            roughWallTranslatingMesh;\n"
+             "    libs            (\"%s\");\n    velocity        "
+             "(%r %r %r);\n}\n" % ((lib,) + tuple(Uw)))
+    # The library in controlDict too: its stitcher is chosen before the
+    # mover is read
+    fc.replace_in_file(os.path.join(case, "system", "controlDict"),
+                       r'^libs\s+\(', 'libs            ("%s" ' % lib)
+    run(case)
+    p = particles(case, "0.05")
+    U = p["U"]
+    d = diameters(case, "0.05", len(U))
+    t.check(len(U) == 3*n, "moving wall: all %d particles kept (%d)"
+            % (3*n, len(U)))
+    # The mesh moved: the points at 0.05 are those at 0 + Uw t
+    moved = os.path.exists(os.path.join(case, "0.05", "polyMesh", "points"))
+    t.check(moved, "the mesh moved (0.05/polyMesh/points written)")
+    for angle, dg in sorted(ANGLES.items()):
+        g = np.abs(d - dg) < 1e-9
+        v = np.array(incident(angle)) - Uw      # relative to the wall
+        un, ut = -v[1], v[0]
+        rolling = ut <= 3.5*mu0*(1 + e)*un
+        vt = (5/7)*ut if rolling else ut - muD*(1 + e)*un
+        expected = np.array([vt, e*un, 0.0]) + Uw
+        err = np.abs(U[g] - expected).max()
+        t.check(np.count_nonzero(g) == n and err < 1e-9,
+                "moving wall, alpha = %d deg (%.2f deg relative to the wall, "
+                "%s): U'' = V'' + Uw = (%.6f, %.6f, 0) for all %d particles "
+                "(largest deviation %.1e < 1e-9)"
+                % (angle, math.degrees(math.atan2(un, ut)),
+                   "rolling" if rolling else "sliding", expected[0],
+                   expected[1], np.count_nonzero(g), err))
+
+
 SKIPPED = []
 
 
@@ -490,7 +578,8 @@ def main():
     {"flatWall": test_flat_wall, "smooth": test_smooth,
      "energy": test_energy, "closedBox": test_closed_box,
      "badInput": test_bad_input,
-     "outerCorrectors": test_outer_correctors}[args.test](args, work)
+     "outerCorrectors": test_outer_correctors,
+     "movingWall": test_moving_wall}[args.test](args, work)
 
 
 if __name__ == "__main__":

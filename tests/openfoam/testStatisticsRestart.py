@@ -6,7 +6,9 @@ hit the wall, before the 10 deg ones), then restarts it to t = 0.05.  The
 statistics file of the restarted run (postProcessing/.../0.025/) must go on
 from the stored totals: its first row already counts the hits before the
 restart, its last row counts every parcel once, and its mean k_n, k_t and
-energy loss equal those of all parcels at the end.  (OpenFOAM-13's functions
+energy loss equal those of all parcels at the end; the same from restart
+files in the older forms (counts without patch names, sums instead of
+exactSums).  (OpenFOAM-13's functions
 solver reads the frozen carrier at subSolverTime 0: the restart time holds
 no carrier fields.)
 
@@ -87,6 +89,69 @@ def test():
 
     renamed_restart(args, platform, n)
     large_count_restart(args, platform, n)
+    old_format_restart(args, platform, n)
+
+
+def old_format_restart(args, platform, n):
+    """Restart files written by earlier versions, still read: the counts as
+    a labelList 'counts' without the patch names (placed by index), and the
+    sums as a scalarList 'sums' instead of the strings of 'exactSums'.  The
+    first run's stored entries are rewritten in the older form (the same
+    numbers, 17 digits); the restart must go on from them as from the
+    current form: lowerWall's 3n hits and mean k_n equal to the current
+    form's restart (exactly: the same numbers), no stored statistics
+    ignored."""
+    results = {}
+    for form in ("current", "countsWithoutPatches", "sums"):
+        case = t.wall_impact_case(platform, os.path.join(args.work, form),
+                                  args.cloud, parcels=n)
+        case.mesh()
+        case.set_control(endTime="0.025", writeInterval="25")
+        case.solve("log.run1")
+        paths = glob.glob(case.file(
+            "0.025/uniform/lagrangian/*/*OutputProperties"))
+        text = fc.read_text(paths[0])
+
+        def strings(key):
+            m = re.search(r"\b%s\s+\d+\s*\(([^)]*)\)\s*;" % key, text)
+            if not m:
+                raise t.TestFailure("%s: no %s in %s" % (form, key, paths[0]))
+            return m, re.findall(r'"([^"]*)"', m.group(1))
+
+        if form == "countsWithoutPatches":
+            m, counts = strings("exactCounts")
+            text = text.replace(m.group(0), "counts %d (%s);" % (
+                len(counts), " ".join(counts)))
+            text, k = re.subn(r"\n\s*patches\s+\d+\s*\([^)]*\)\s*;", "",
+                              text)
+            t.check(k == 1, "%s: stored counts rewritten as a labelList, "
+                    "the patch names removed" % form)
+        elif form == "sums":
+            m, sums = strings("exactSums")
+            text = text.replace(m.group(0), "sums %d (%s);" % (
+                len(sums), " ".join(sums)))
+            t.check("exactSums" not in text and "sums %d (" % len(sums)
+                    in text, "%s: stored sums rewritten as a scalarList "
+                    "'sums'" % form)
+        with open(paths[0], "w") as f:
+            f.write(text)
+        case.set_control(endTime="0.05")
+        rc, _ = case.solve("log.run2", check_rc=False)
+        _, rows = case.read_statistics()
+        results[form] = rows[-1]
+        t.check(rc == 0 and "stored statistics" not in case.log("log.run2"),
+                "%s: the restart runs (rc %d), no stored statistics ignored"
+                % (form, rc))
+    ref = results["current"]
+    for form in ("countsWithoutPatches", "sums"):
+        last = results[form]
+        t.check(last["lowerWall_hits"] == 3 * n
+                and all(last[k] == ref[k] for k in ref),
+                "%s: the restart goes on from the stored totals: %d hits, "
+                "every column equal to the current form's restart (mean k_n "
+                "%.12g vs %.12g)" % (form, last["lowerWall_hits"],
+                                     last["lowerWall_meanKn"],
+                                     ref["lowerWall_meanKn"]))
 
 
 def large_count_restart(args, platform, n):

@@ -18,8 +18,15 @@ Control on the 3-D mesh with the same settings: no such warning, v_z (and
 omega_x) are non-zero for most parcels and the statistics agree with the
 reference WITH lateral tilt.
 
+--oneD: a 1-D mesh instead (one cell in x and z, empty on four sides): a
+rough patch there has no plane to keep the parcels in, and the run must
+stop at start-up with a message saying that the rough wall needs a 2-D or
+3-D mesh and that this one solves 1 direction (as a 3-D mesh it would run
+with rebounds out of the column; as a 2-D one it would keep one of its two
+empty directions).
+
 Usage: testTwoD.py --platform openfoam13|openfoam1912 --cloud colliding|kinematic
-           [--parcels N] [--parcels3D N] [--work DIR]
+           [--parcels N] [--parcels3D N] [--oneD] [--work DIR]
 
 SPDX-License-Identifier: GPL-3.0-or-later
 """
@@ -47,7 +54,54 @@ def parse_args():
     t.add_platform_args(p)
     p.add_argument("--parcels", type=int, default=30000)
     p.add_argument("--parcels3D", type=int, default=10000)
+    p.add_argument("--oneD", action="store_true")
     return p.parse_args()
+
+
+ONE_D_MESH = """
+scale   1;
+
+vertices
+(
+    (-0.005 0   -0.005) ( 0.005 0   -0.005) ( 0.005 0.1 -0.005)
+    (-0.005 0.1 -0.005) (-0.005 0    0.005) ( 0.005 0    0.005)
+    ( 0.005 0.1  0.005) (-0.005 0.1  0.005)
+);
+
+blocks
+(
+    hex (0 1 2 3 4 5 6 7) (1 10 1) simpleGrading (1 1 1)
+);
+
+boundary
+(
+    lowerWall { type wall; faces ((0 1 5 4)); }
+    upperWall { type wall; faces ((3 7 6 2)); }
+    sides
+    {
+        type empty;
+        faces ((0 4 7 3) (1 2 6 5) (0 3 2 1) (4 5 6 7));
+    }
+);
+"""
+
+
+def one_d_refused(args):
+    platform = fc.Platform(args.platform)
+    case = fc.FoamCase(platform, t.WALL_IMPACT,
+                       os.path.join(args.work, "case1D"), args.cloud)
+    fc.write_text(case.file("system/blockMeshDict"),
+                  fc.foam_header("dictionary", "blockMeshDict", "system")
+                  + ONE_D_MESH)
+    case.write_injectors([fc.Injector("down", [(0.0, 0.05, 0.0)],
+                                      (0.0, -1.0, 0.0), 100e-6)])
+    case.write_settings(t.DEFAULT_SETTINGS)
+    case.mesh()
+    rc, _ = case.solve(check_rc=False)
+    log = case.log()
+    message = "needs a 2-D or 3-D mesh; this mesh solves 1 direction(s)"
+    t.check(rc != 0 and message in log,
+            "1-D mesh: the run stops (rc %d) with '... %s'" % (rc, message))
 
 
 def run_case(args, two_d, parcels):
@@ -69,6 +123,9 @@ def reference_function(args, lateral_tilt):
 
 def test():
     args = parse_args()
+    if args.oneD:
+        one_d_refused(args)
+        return
     n_total = 3 * args.parcels
 
     case, parcels = run_case(args, True, args.parcels)

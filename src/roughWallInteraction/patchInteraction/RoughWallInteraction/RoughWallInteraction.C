@@ -54,6 +54,61 @@ inline void Foam::RoughWallInteraction<CloudType>::watchWallVelocity
 
 
 template<class CloudType>
+void Foam::RoughWallInteraction<CloudType>::watchInPlaneSpin
+(
+    const label patchi,
+    const vector& L
+)
+{
+    if (inPlaneSpin_[patchi] != 0)
+    {
+        // Seen since the last report, or warned of
+        return;
+    }
+    for (direction cmpt = 0; cmpt < vector::nComponents; ++cmpt)
+    {
+        if (cmpt != emptyComponent_ && L[cmpt] != 0)
+        {
+            inPlaneSpin_[patchi] = 1;
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::RoughWallInteraction<CloudType>::reportInPlaneSpin()
+{
+    if (emptyComponent_ < 0 || !withSpin)
+    {
+        return;
+    }
+
+    // Gathered from every processor: a non-master warning would be lost
+    scalarList seen(inPlaneSpin_);
+    roughWallCompat::maxOverProcessors(seen);
+
+    forAll(seen, patchi)
+    {
+        if (seen[patchi] > 0 && inPlaneSpin_[patchi] >= 0)
+        {
+            WarningInFunction
+                << "Patch " << stats_.patchName(patchi) << ": parcels arrive"
+                << " with spin about an axis in the plane of this 2-D case."
+                << " The rough wall keeps only the spin about "
+                << vector::componentNames[emptyComponent_] << " and sets"
+                << " the other components to zero. Warned once per patch."
+                << endl;
+        }
+        if (seen[patchi] > 0)
+        {
+            // Warned: never again
+            inPlaneSpin_[patchi] = -1;
+        }
+    }
+}
+
+
+template<class CloudType>
 void Foam::RoughWallInteraction<CloudType>::rebound
 (
     parcelType& p,
@@ -145,6 +200,7 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
             const vector& L = p.angularMomentum();
             if (emptyCmpt >= 0)
             {
+                watchInPlaneSpin(pp.index(), L);
                 omega[emptyCmpt] = L[emptyCmpt]/I;
             }
             else
@@ -356,7 +412,8 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
     file_(),
     wallSpeedSqr_(stats_.nPatches(), scalar(-1)),
     wallSpeedSqrReported_(stats_.nPatches(), scalar(-1)),
-    stored_(stats_)
+    stored_(stats_),
+    inPlaneSpin_(stats_.nPatches(), scalar(0))
 {
     readStored();
 
@@ -435,7 +492,8 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
     file_(),
     wallSpeedSqr_(pim.wallSpeedSqr_),
     wallSpeedSqrReported_(pim.wallSpeedSqrReported_),
-    stored_(pim.stored_)
+    stored_(pim.stored_),
+    inPlaneSpin_(pim.inPlaneSpin_)
 {}
 
 
@@ -513,6 +571,7 @@ void Foam::RoughWallInteraction<CloudType>::info(ROUGHWALL_INFO_PARAMETERS)
     );
 
     reportWallVelocity(ROUGHWALL_INFO_STREAM);
+    reportInPlaneSpin();
 
     if (this->writeTime())
     {
