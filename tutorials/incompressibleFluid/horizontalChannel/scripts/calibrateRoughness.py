@@ -14,7 +14,10 @@ the result rounded to 3 digits; the file then records the command that
 checks them and its output, with two other seeds of the profile beside it
 (the spread a different realisation of the same surface gives).
 
-Usage: calibrateRoughness.py [--stats PATH] [--output FILE]
+Usage: calibrateRoughness.py [--check] [--stats PATH] [--output FILE]
+  --check   only the check of the values used (three roughWallStats runs);
+            without it the bisection runs first (about 250 runs of
+            roughWallStats, a few minutes)
   --stats   roughWallStats (default: $ROUGHWALL_ROOT/bin/roughWallStats, else
             bin/roughWallStats of the checkout holding this tutorial)
   --output  default: roughnessCalibration.txt beside Allrun
@@ -63,9 +66,24 @@ def main():
                                 formatter_class=argparse.RawTextHelpFormatter)
     p.add_argument("--stats", default=os.path.join(ROOT, "bin", "roughWallStats"))
     p.add_argument("--output", default=os.path.join(TUTORIAL, "roughnessCalibration.txt"))
+    p.add_argument("--check", action="store_true")
     args = p.parse_args()
     (d1, D1), (d2, D2) = TARGETS
+    lines = [
+        "# Calibration of the horizontalChannel tutorial's steel surface",
+        "# (written by scripts/calibrateRoughness.py; its docstring gives the method)",
+        "#",
+        "# Targets (Derevich's paper, glass beads on steel): Delta(110 um) = 8 deg,",
+        "# Delta(460 um) = 5 deg, each within %g deg." % TOLERANCE]
+    if not args.check:
+        lines += bisection(args, d1, D1, d2, D2)
+    lines += ["# Used by the tutorial (rounded): Rq = %s m, RSm = %s m. Check:" % (
+        USED["Rq"], USED["RSm"])]
+    check_used(args, lines)
 
+
+def bisection(args, d1, D1, d2, D2):
+    """The surface with Delta(d1) = D1 and Delta(d2) = D2 (see the docstring)"""
     def rq_for(RSm):
         return bisect(lambda Rq: deltas(args.stats, Rq, RSm, [d2])[0] - D2,
                       1e-6, 10e-6, 18, geometric=True)
@@ -76,19 +94,12 @@ def main():
                  80e-6, 200e-6, 12)
     Rq = rq_for(RSm)
     found = deltas(args.stats, Rq, RSm, [d1, d2])
+    return ["# Bisection result: Rq = %.4g m, RSm = %.4g m: Delta(110 um) = %.3f deg,"
+            % (Rq, RSm, found[0]),
+            "# Delta(460 um) = %.3f deg." % found[1]]
 
-    lines = [
-        "# Calibration of the horizontalChannel tutorial's steel surface",
-        "# (written by scripts/calibrateRoughness.py; its docstring gives the method)",
-        "#",
-        "# Targets (Derevich's paper, glass beads on steel): Delta(110 um) = 8 deg,",
-        "# Delta(460 um) = 5 deg, each within %g deg." % TOLERANCE,
-        "# Bisection result: Rq = %.4g m, RSm = %.4g m: Delta(110 um) = %.3f deg,"
-        % (Rq, RSm, found[0]),
-        "# Delta(460 um) = %.3f deg." % found[1],
-        "# Used by the tutorial (rounded): Rq = %s m, RSm = %s m. Check:" % (
-            USED["Rq"], USED["RSm"]),
-    ]
+
+def check_used(args, lines):
     worst = 0.0
     for seed in (1, 2, 3):
         cmd, out = run(args.stats, USED["Rq"], USED["RSm"], DIAMETERS, seed)
