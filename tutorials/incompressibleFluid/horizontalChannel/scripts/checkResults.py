@@ -4,7 +4,7 @@
 Usage: checkResults.py [--record FILE] SHORT_RESULTS_DIR [REFERENCE_RESULTS_DIR]
 
 SHORT_RESULTS_DIR is the result of ./Allrun -test (the 3-D default variant
-rough5 with fewer parcels and a shorter sampling window than the default
+steel with fewer parcels and a shorter sampling window than the default
 run, the same spin-up); REFERENCE_RESULTS_DIR the committed result of the
 default run (results/).
 
@@ -15,14 +15,17 @@ Each check names the faults it is there to catch:
    normalised (mean over the bins = 1).
    Faults: a crash, NaN, lost parcels in a bin, a broken post-processing.
 2. The set-up is the default one, as the run itself reports it: geometry 3D
-   (caseInfo, from the variant), lateral facet tilt on, the rotational lift
-   with Loth's coefficient and the fluid torque of Dennis, Singh & Ingham as
-   the solver printed them at start-up; and the spanwise motion is there:
-   rms spanwise velocity above MARGIN_SE standard errors (exactly 0 in 2-D).
-   Faults: the 2-D set-up, the lift or the torque switched off or another
-   coefficient, lateral tilt lost.
+   (caseInfo, from the variant), Delta from the calibrated surface (its Rq
+   and RSm), lateral facet tilt on, the Saffman-Mei lift and the turbulent
+   dispersion on, the rotational lift with Loth's coefficient and the fluid
+   torque of Dennis, Singh & Ingham as the solver printed them at start-up;
+   and the spanwise motion is there: rms spanwise velocity above MARGIN_SE
+   standard errors (exactly 0 in 2-D).
+   Faults: the 2-D set-up, a constant Delta or another surface, the lift or
+   the torque switched off or another coefficient, lateral tilt lost, the
+   shear lift or the dispersion switched off.
 3. Agreement with the committed result: every statistic of BAND within
-   BAND_SE combined standard errors of the committed rough5 (the short run
+   BAND_SE combined standard errors of the committed steel (the short run
    has the default run's spin-up, so no allowance for drift is needed;
    README.md, "Spin-up").
    Faults: anything that moves a statistic of the tutorial (e, mu, Delta,
@@ -49,17 +52,19 @@ from foamcase.tables import read_csv
 
 N_BINS = 25
 MARGIN_SE = 3.0
-VARIANT = "rough5"
+VARIANT = "steel"
 #: The set-up the default variant must report (summary.csv columns)
-SETUP = {"geometry": "3D", "lateralTilt": "on", "lift": "Loth",
-         "torque": "DennisSinghIngham"}
+SETUP = {"geometry": "3D", "roughness": "Rq=2.87e-6,RSm=122e-6",
+         "lateralTilt": "on", "lift": "Loth", "torque": "DennisSinghIngham",
+         "shearLift": "SaffmanMei", "dispersion": "stochasticDispersionRAS"}
 #: Band of the agreement with the reference, in combined standard errors
 BAND_SE = 4.0
 BAND = ("upperFraction", "UyRms", "UxRms", "UzRms", "meanUxOverBulk",
         "impactFrequency", "knImpulse", "ktImpulse")
 FIGURES = ("concentration.png", "velocity.png", "wallHits.png", "spinUp.png",
            "spinRatios.png")
-TEXT = {"variant", "wallModel", "geometry", "lateralTilt", "lift", "torque"}
+TEXT = {"variant", "wallModel", "geometry", "roughness", "lateralTilt", "e", "muD",
+        "lift", "torque", "shearLift", "dispersion"}
 
 #: The quantitative checks: (check, measured, required, margin)
 records = []

@@ -93,6 +93,33 @@ def read_model_statistics(case):
     return {n: np.array([r[n] for r in rows]) for n in names}
 
 
+RANGE_LINE = re.compile(r"^\s*(rotationalLift|fluidTorque) \((\w+)\): (\d+) of (\d+) "
+                        r"evaluations outside")
+TIME_LINE = re.compile(r"^Time = (%s)s?$" % fc.NUMBER)
+
+
+def in_run_range_counts(case, t0, t1):
+    """How many of the spin models' evaluations the run itself counted
+    outside their correlation's range (the log's line at the end of every
+    evolve, docs/spin.md), summed over the time steps ending in (t0, t1]:
+    {liftEvaluations, liftOutside, torqueEvaluations, torqueOutside}; a
+    model that is not selected has no entry."""
+    out = {}
+    time = -np.inf
+    with open(os.path.join(case, "log.foamRun")) as f:
+        for line in f:
+            m = TIME_LINE.match(line)
+            if m:
+                time = float(m.group(1))
+                continue
+            m = RANGE_LINE.match(line)
+            if m and t0 + EPS_TIME < time <= t1 + EPS_TIME:
+                key = "lift" if m.group(1) == "rotationalLift" else "torque"
+                out[key + "Outside"] = out.get(key + "Outside", 0) + int(m.group(3))
+                out[key + "Evaluations"] = out.get(key + "Evaluations", 0) + int(m.group(4))
+    return out
+
+
 def window_model_statistics(stats, t0, t1):
     """Hits, mean k_n, k_t and facet tilt of the hits between t0 and t1.
 
@@ -383,6 +410,14 @@ def analyse(case):
             ok = w > 0
             summary[key + "_mean"] = float(np.sum(w[ok]*v[ok])/w[ok].sum()) \
                 if ok.any() else np.nan
+    # The spin models' own count of evaluations outside their range, in the
+    # sampling window (every particle and sub-step, with the air's
+    # fluctuation: the run's count, not the samples' estimate above)
+    counts = in_run_range_counts(case, t0, t1)
+    summary.update(counts)
+    for key in ("lift", "torque"):
+        if counts.get(key + "Evaluations"):
+            summary[key + "OutsideInRun"] = counts[key + "Outside"]/counts[key + "Evaluations"]
     summary["spinRatios"] = ratios
     summary["spinHistograms"] = hist
     return info, prof, summary, history
@@ -396,7 +431,8 @@ PROFILE_COLUMNS = ["y_over_H", "concentration", "concentration_se",
                    "Ux_rms", "Ux_rms_se", "Uy_rms", "Uy_rms_se", "samples"]
 
 SUMMARY_COLUMNS = [
-    "variant", "geometry", "wallModel", "roughnessAngle", "lateralTilt", "lift", "torque",
+    "variant", "geometry", "wallModel", "roughness", "roughnessAngle", "lateralTilt", "e",
+    "muD", "lift", "torque", "shearLift", "dispersion",
     "diameter", "nParcels", "deltaT",
     "sampleStart", "sampleEnd", "snapshots", "samples",
     "upperFraction", "upperFraction_se", "upperFractionEarly", "upperFractionEarly_se",
@@ -417,12 +453,15 @@ SUMMARY_COLUMNS = [
     "impactsPerParcelPerMetre_lowerWall", "impactsPerParcelPerMetre_upperWall",
     "kn_mean", "kt_mean", "kn_lowerWall", "kt_lowerWall", "kn_upperWall", "kt_upperWall",
     "gammaDeg_lowerWall", "gammaDeg_upperWall", "facetPerHit_lowerWall",
-    "facetPerHit_upperWall", "wallClock", "cpuTime"]
+    "facetPerHit_upperWall", "liftEvaluations", "liftOutside", "liftOutsideInRun",
+    "torqueEvaluations", "torqueOutside", "torqueOutsideInRun", "wallClock", "cpuTime"]
 
 
 def fmt(v):
     if isinstance(v, str):
         return v
+    if isinstance(v, (int, np.integer)):
+        return str(v)
     return "" if v is None or not np.isfinite(v) else "%.6g" % v
 
 

@@ -11,8 +11,8 @@ particle along with the wall.
 
 What runs: the tutorial's own set-up (./Allrun -setup in a temporary copy:
 the carrier flow, the particle-centre mesh, scripts/mapCarrierFlow.py's
-boundary conditions) for the default variant rough5 (3-D slab, lateral
-facet tilt), with every force and torque between wall hits switched off (no drag, gravity, lift, dispersion, spin
+boundary conditions) for the default variant steel (3-D slab, lateral
+facet tilt, Delta from the surface), with every force and torque between wall hits switched off (no drag, gravity, lift, dispersion, spin
 models), so that only wall hits change a parcel's energy. The parcels start
 slow, (0.5, -1, 0) m/s, so that a wall sliding downstream would speed them
 up. The run writes every step; between two steps no parcel may gain energy
@@ -46,7 +46,7 @@ TUTORIAL = os.path.dirname(HERE)
 import foamcase as fc
 from foamcase import tutorial as tc
 
-VARIANT = "rough5"
+VARIANT = "steel"
 PARCELS = 400
 U0 = "(0.5 -1 0)"
 END_TIME = 0.1

@@ -87,15 +87,24 @@ class Results:
 
 
 #: The default variant and the controls, each changing one modelling choice
-DEFAULT = "rough5"
+#: against its reference: (variant, reference, what changes)
+DEFAULT = "steel"
 CHOICES = (
-    ("rough5.2D", "2-D instead of 3-D (no spanwise motion, facets tilted in the plane only)"),
-    ("rough5.OesterleBuiDinh", "rotational lift: Oesterle & Bui Dinh (old) instead of Loth"),
-    ("rough5.noLift", "rotational lift off (fluid torque on)"),
-    ("rough5.impactDependent", "e and muD tables of the facet impact angle "
-     "(illustrative, equal to rough5's constants at 10 deg) instead of constants"),
-    ("rough2.5", "Delta 2.5 instead of 5 deg"),
-    ("rough1", "Delta 1 instead of 5 deg (nearly smooth)"),
+    ("steel.noLateralTilt", DEFAULT,
+     "no sideways facet tilt (facets tilted in the x-y plane only), still 3-D"),
+    ("steel.2D", "steel.noLateralTilt",
+     "2-D domain (one-cell slab, no spanwise motion) instead of the 3-D slab, both "
+     "without sideways tilt"),
+    ("steel.OesterleBuiDinh", DEFAULT,
+     "rotational lift: Oesterle & Bui Dinh (old) instead of Loth"),
+    ("steel.noLift", DEFAULT, "rotational lift off (fluid torque on)"),
+    ("steel.eTable", DEFAULT, "e a table of the facet impact angle (illustrative, 0.8 "
+     "at 10 deg) instead of the constant 0.8"),
+    ("steel.muDTable", DEFAULT, "muD a table of the facet impact angle (illustrative, "
+     "0.4 up to 10 deg) instead of the constant 0.4"),
+    ("steel.noSaffmanMei", DEFAULT, "Saffman-Mei shear lift off"),
+    ("steel.noDispersion", DEFAULT, "turbulent dispersion off"),
+    ("rough5", DEFAULT, "a constant Delta = 5 deg instead of the surface's"),
 )
 #: The statistics of the sensitivity table: (column, text, format, scale)
 STATS = (
@@ -105,10 +114,9 @@ STATS = (
     ("meanUxOverBulk", "mean streamwise velocity / bulk air velocity", "%.4f", 1),
     ("impactFrequency", "wall impacts per parcel per metre (both walls)", "%.3f", 1),
 )
-#: What the set-up column cannot show (e and muD are not in summary.csv)
-SETUP_NOTES = {"rough5.impactDependent": ", e and muD tables of the impact angle"}
-#: The roughness trend, smooth end first (Delta = 0 is not part of it)
-TREND = ("rough1", "rough2.5", "rough5")
+#: The roughness trend, smooth end first (Delta = 0 is not part of it); the
+#: surface's Delta at 195 um (7.0 deg) is its rough end
+TREND = ("rough1", "rough2.5", "rough5", "steel")
 SMOOTH = "smooth"
 
 
@@ -179,8 +187,22 @@ def carrier(r):
 def setup(r, v):
     x = r.summary[v]
     delta = number(x, "roughnessAngle")
-    return "%s, Delta %g deg, lift %s, torque %s%s" % (
-        x["geometry"], delta, x["lift"], x["torque"], SETUP_NOTES.get(v, ""))
+    wall = ("Delta %.2f deg of the surface" % delta if x.get("roughness")
+            else "Delta %g deg" % delta)
+    parts = [x["geometry"], wall]
+    if x["geometry"] == "3D" and x["lateralTilt"] != "on" and delta > 0:
+        parts.append("no sideways tilt")
+    parts.append("lift %s" % x["lift"])
+    if x["torque"] != "DennisSinghIngham":
+        parts.append("torque %s" % x["torque"])
+    for key in ("e", "muD"):
+        if x.get(key, "").startswith("table"):
+            parts.append("%s table of the impact angle" % key)
+    if x.get("shearLift") == "none":
+        parts.append("no Saffman-Mei")
+    if x.get("dispersion") == "none":
+        parts.append("no dispersion")
+    return ", ".join(parts)
 
 
 def results_table(r):
@@ -204,32 +226,59 @@ def results_table(r):
         "of the sampling window. v wall-normal, u streamwise, w spanwise. Impacts: "
         "patchCollisionDensity, wall-normal impact speed above 5 cm/s, per parcel "
         "per metre travelled. `%s`: Delta = 0, the beads end on the floor and its "
-        "rms values resolve resting contact as micro-bounces of one time step, "
-        "g dt/2 = %.4f m/s: not physics.)" % (SMOOTH, 9.81*r.s(SMOOTH, "deltaT")/2
-                                             if SMOOTH in r.summary else math.nan))
+        "rms wall-normal velocity, %.4f m/s, is resting contact resolved as "
+        "micro-bounces of one time step, of the order of g dt/2 = %.4f m/s: not "
+        "physics.)" % ((SMOOTH, r.s(SMOOTH, "UyRms"), 9.81*r.s(SMOOTH, "deltaT")/2)
+                       if SMOOTH in r.summary else (SMOOTH, math.nan, math.nan)))
 
 
 def sensitivity(r):
     head = ["modelling choice (variant)"] + [t for _, t, _, _ in STATS]
     rows = []
-    for v, text in CHOICES:
-        if v not in r.summary:
+    for v, ref, text in CHOICES:
+        if v not in r.summary or ref not in r.summary:
             continue
-        row = ["%s (`%s` - `%s`)" % (text, v, DEFAULT)]
+        row = ["%s (`%s` - `%s`)" % (text, v, ref)]
         for key, _, fmt, scale in STATS:
-            a, sa = r.s(DEFAULT, key), r.s(DEFAULT, key + "_se")
+            a, sa = r.s(ref, key), r.s(ref, key + "_se")
             b, sb = r.s(v, key), r.s(v, key + "_se")
             row.append("%s (%.0f s.e.)" % (pm(b - a, math.hypot(sa, sb), fmt, scale),
                                             z(a, sa, b, sb)))
         rows.append(row)
-    base = ["**`%s` itself** (3-D, Loth, Delta 5 deg)" % DEFAULT] + [
+    base = ["**`%s` itself** (%s)" % (DEFAULT, setup(r, DEFAULT))] + [
         pm(r.s(DEFAULT, key), r.s(DEFAULT, key + "_se"), fmt, scale)
         for key, _, fmt, scale in STATS]
     return table(head, [base] + rows) + (
-        "\n\n(Each row: the variant minus `%s`, +- the combined standard error of "
-        "the two runs (taken as independent: the parcels start at the same places, "
-        "but their random walks differ), and the difference in combined standard "
-        "errors.)" % DEFAULT)
+        "\n\n(Each row: the variant minus its reference, which differs from it in "
+        "that one choice only (`%s` for all but the 2-D row), +- the combined standard "
+        "error of the two runs (taken as independent: the parcels start at the same "
+        "places, but their random walks differ), and the difference in combined "
+        "standard errors.)" % DEFAULT)
+
+
+def sensitivity_reading(r):
+    """What each row of the sensitivity table shows, from the numbers"""
+    lines = []
+    for v, ref, text in CHOICES:
+        if v not in r.summary or ref not in r.summary:
+            continue
+        zs = []
+        for key, name, fmt, scale in STATS:
+            a, sa = r.s(ref, key), r.s(ref, key + "_se")
+            b, sb = r.s(v, key), r.s(v, key + "_se")
+            zs.append((z(a, sa, b, sb), name, (b - a)/a if a else math.nan))
+        zs.sort(reverse=True)
+        big = [x for x in zs if x[0] > 3]
+        if not big:
+            lines.append("- `%s` (%s): every statistic within 3 combined standard "
+                         "errors of `%s` (largest: %s, %.1f s.e.)."
+                         % (v, text, ref, zs[0][1], zs[0][0]))
+        else:
+            lines.append("- `%s` (%s): moves %s." % (v, text, "; ".join(
+                "%s by %+.0f %% (%.0f s.e.)" % (name, 100*rel, zz)
+                for zz, name, rel in big)))
+    return ("Each control against its reference, from the table (beyond 3 combined "
+            "standard errors, relative change):\n\n" + "\n".join(lines))
 
 
 def trends(r):
@@ -245,7 +294,7 @@ def trends(r):
         rows.append([text, " -> ".join(pm(a, b, fmt, scale) for a, b in zip(vals, ses)),
                      mono + " (steps: %s s.e.)" % ", ".join("%.0f" % x for x in steps)])
     return ("Delta = %s deg (`%s`):\n\n" % (" -> ".join(
-        "%g" % r.s(v, "roughnessAngle") for v in vs), "`, `".join(vs))
+        "%.3g" % r.s(v, "roughnessAngle") for v in vs), "`, `".join(vs))
         + table(["statistic", "value", "with growing Delta"], rows))
 
 
@@ -405,7 +454,104 @@ def smoke_test(r):
     return "\n\n".join(out)
 
 
+G = 9.81
+RHO_GLASS = 2500.0
+RHO_AIR = 1.2
+SLAB_WIDTH = 0.01      # [m], the 3-D slab (Allrun)
+
+
+def wall(r):
+    """The default wall: Delta of the calibrated surface at the beads' size"""
+    x = r.summary[DEFAULT]
+    rough = dict(kv.split("=") for kv in x["roughness"].split(","))
+    return ("The default variant `%s` runs on the surface Rq = %g um, RSm = %g um: "
+            "for its %g um beads the run's Delta (roughWallStats at that diameter, "
+            "as Allrun records it in `summary.csv`) is **%.2f deg**, against the "
+            "former default's constant 5 deg (`rough5`)." % (
+                DEFAULT, 1e6*float(rough["Rq"]), 1e6*float(rough["RSm"]),
+                1e6*r.s(DEFAULT, "diameter"), r.s(DEFAULT, "roughnessAngle")))
+
+
+def impact_rates(r):
+    """The default variant's impact rate by hand against the run"""
+    v = DEFAULT
+    H = float(r.carrier["height"])
+    vrms, u = r.s(v, "UyRms"), r.s(v, "meanUx")
+    period = 2*H/vrms
+    return ("**Impact rates**: a bead that crosses the channel back and forth with "
+            "a wall-normal speed v hits each wall once per 2H/v; for `%s` (rms v = "
+            "%.2f m/s, mean u = %.1f m/s, results table) that is every %.0f ms or "
+            "%.2f m, about %.1f impacts per metre on each wall. The run gives %.2f "
+            "on the floor and %.2f on the ceiling: the same order, lower because not "
+            "every bead crosses the whole channel, and more on the floor because "
+            "gravity brings beads back to it. With less roughness the ceiling is "
+            "reached less often (`rough1`: %.2f against %.2f), as it should be when "
+            "the beads' wall-normal speed approaches the %.2f m/s it takes to get "
+            "there." % (v, vrms, u, 1e3*period, u*period, 1/(u*period),
+                        r.s(v, "impactFrequency_lowerWall"),
+                        r.s(v, "impactFrequency_upperWall"),
+                        r.s("rough1", "impactFrequency_lowerWall"),
+                        r.s("rough1", "impactFrequency_upperWall"),
+                        math.sqrt(2*G*H)))
+
+
+def crossings(r):
+    """How often a bead of the default variant crosses the cyclic faces"""
+    w = r.s(DEFAULT, "UzRms")
+    dt = r.s(DEFAULT, "deltaT")
+    return ("At the beads' rms spanwise velocity (`%s`: %.2f m/s) a bead crosses "
+            "the %g mm slab, and so the cyclic faces, about every %.0f ms, once per "
+            "%.0f time steps." % (DEFAULT, w, 1e3*SLAB_WIDTH, 1e3*SLAB_WIDTH/w,
+                                  SLAB_WIDTH/w/dt))
+
+
+def loading(r):
+    """Bead-bead collisions (kinetic theory) against wall impacts"""
+    v = DEFAULT
+    d = r.s(v, "diameter")
+    T = (r.s(v, "UxRms")**2 + r.s(v, "UyRms")**2 + r.s(v, "UzRms")**2)/3
+    u = r.s(v, "meanUx")
+    ubulk = float(r.carrier["Ubulk"])
+    fwall = r.s(v, "impactFrequency")*u          # wall impacts per bead per second
+    per_n = 4*d*d*math.sqrt(math.pi*T)           # bead-bead collisions per bead per second, / n
+    mp = RHO_GLASS*math.pi/6*d**3
+    # mass loading eta = (n m_p u)/(rho_air U_bulk): collisions equal wall impacts at
+    n_equal = fwall/per_n
+    eta_equal = n_equal*mp*u/(RHO_AIR*ubulk)
+    return ("For `%s`: granular temperature T = (u'^2 + v'^2 + w'^2)/3 = %.2f m2/s2 "
+            "from its rms velocities; a bead collides with others f = 4 n d^2 "
+            "sqrt(pi T) = %.3g n times per second (n beads per m3, kinetic theory of "
+            "a dilute gas of equal spheres), and hits a wall %.3g impacts per metre x "
+            "%.1f m/s = %.1f times per second. The two rates are equal at n = %.3g "
+            "per m3, a mass loading eta = n m_p u_p/(rho_air U_bulk) = **%.2f** "
+            "(m_p = %.3g kg, u_p = %.1f m/s, U_bulk = %.2f m/s). At a loading eta the "
+            "bead-bead rate is eta/%.2f of the wall rate: %.0f %% at eta = 0.1, "
+            "%.0f %% at eta = 0.01." % (
+                v, T, per_n, r.s(v, "impactFrequency"), u, fwall, n_equal, eta_equal,
+                mp, u, ubulk, eta_equal, 100*0.1/eta_equal, 100*0.01/eta_equal))
+
+
+def lift_budget(r):
+    """How much of the wall-normal momentum budget the rotational lift carries"""
+    a, sa = r.s(DEFAULT, "knImpulse"), r.s(DEFAULT, "knImpulse_se")
+    b, sb = r.s("steel.noLift", "knImpulse"), r.s("steel.noLift", "knImpulse_se")
+    share = 1 - (a - 1)/(b - 1)
+    share_se = math.hypot(sa/(b - 1), (a - 1)*sb/(b - 1)**2)
+    return ("Impulse-weighted k_n: %.3f +- %.3f with the rotational lift (`%s`), "
+            "%.3f +- %.3f without it (`steel.noLift`). The walls' net upward "
+            "momentum per unit of incident wall-normal momentum, k_n - 1, is %.3f "
+            "with the lift and %.3f without: the lift carries **%.0f +- %.0f %%** of "
+            "what the walls must supply without it." % (
+                a, sa, DEFAULT, b, sb, a - 1, b - 1, 100*share, 100*share_se))
+
+
 BLOCKS = {
+    "wall": wall,
+    "impactRates": impact_rates,
+    "crossings": crossings,
+    "loading": loading,
+    "liftBudget": lift_budget,
+    "sensitivityReading": sensitivity_reading,
     "provenance": provenance,
     "carrier": carrier,
     "results": results_table,
