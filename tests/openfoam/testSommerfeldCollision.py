@@ -96,14 +96,15 @@ def model_entry(e=1.0, mu=0.0, extra=""):
     return COLLISIONS % (body + extra)
 
 
-def make_case(platform, path, kind="kinematic", seed=3):
+def make_case(platform, path, kind="kinematic", seed=3,
+              per_group=PARCELS_PER_GROUP):
     rng = np.random.default_rng(seed)
-    groups = [{"name": "g%d" % i, "n": PARCELS_PER_GROUP, "d": D,
+    groups = [{"name": "g%d" % i, "n": per_group, "d": D,
                "U0": tuple(rng.normal(0, math.sqrt(T_START), 3)),
                "box": ((0.002, 0.002, 0.002), (0.098, 0.098, 0.098))}
               for i in range(NGROUPS)]
     case, parcels, _ = t.closed_box_case(platform, path, groups, kind, seed)
-    t.check(parcels == PARCELS, "%d parcels injected" % parcels)
+    t.check(parcels == per_group*NGROUPS, "%d parcels injected" % parcels)
     # nParticle of every injector, no forces, 2 x 2 x 2 cells
     fc.replace_in_file(case.file("constant/injectors"),
                        r"nParticle\s+1;", "nParticle       %r;" % N_PARTICLE,
@@ -291,7 +292,7 @@ BAD = [
 def test_bad_input(args, platform):
     for label, entry, patterns in BAD:
         case = make_case(platform, os.path.join(args.work, re.sub(
-            r"\W+", "_", label)))
+            r"\W+", "_", label)), per_group=1)
         set_model(case, entry)
         case.set_control(endTime="0.005")
         case.mesh()
@@ -304,7 +305,8 @@ def test_bad_input(args, platform):
         t.check("Sommerfeld" in log or "SommerfeldCoeffs" in log,
                 "%s: the message names the model's dictionary" % label)
     # The control: the same case with good input runs
-    case = make_case(platform, os.path.join(args.work, "control"))
+    case = make_case(platform, os.path.join(args.work, "control"),
+                     per_group=1)
     case.set_control(endTime="0.005")
     case.mesh()
     case.solve()
