@@ -6,8 +6,11 @@ The case: the closed 0.1 m box of the stability suite with 2 x 2 x 2 cells,
 no carrier forces (no drag, no gravity), specular walls (`rebound`, e = 1,
 mu = 0: a homogeneous gas stays homogeneous, as in a periodic box), and
 NGROUPS injectors whose velocities are drawn from a Maxwellian of
-temperature T_START per component; PARCELS parcels of d = 1 mm, nParticle
-chosen for a collision frequency of about 20 per second.  A first run with
+temperature T_START per component; PARCELS parcels of d = 0.25 mm,
+nParticle (2.9) chosen for a collision frequency of about 20 per second.
+The momentum cloud on OpenFOAM-13 and -14, the colliding cloud (with
+mu = 0, no spin) on v1912, whose kinematic solver needs thermophysical
+properties.  A first run with
 e_pp = 1 and mu_pp = 0 relaxes the gas to a Maxwellian; a restart with
 e_pp = 0.8 lets it cool.
 
@@ -61,7 +64,7 @@ import foamcase as fc
 PARCELS_PER_GROUP = 60
 NGROUPS = 256
 PARCELS = PARCELS_PER_GROUP*NGROUPS
-D = 1e-3
+D = 0.25e-3                 # (nParticle >= 1: v1912 drops parcels of fewer)
 T_START = 1.0               # m^2/s^2 per component
 VOLUME = 0.1**3
 F_TARGET = 20.0             # collisions per particle and second
@@ -98,6 +101,10 @@ def model_entry(e=1.0, mu=0.0, extra=""):
 
 def make_case(platform, path, kind="kinematic", seed=3,
               per_group=PARCELS_PER_GROUP):
+    if not platform.foundation and kind == "kinematic":
+        # v1912's kinematic solver needs thermophysical properties the
+        # box has not: its colliding cloud (mu 0: no spin)
+        kind = "colliding"
     rng = np.random.default_rng(seed)
     groups = [{"name": "g%d" % i, "n": per_group, "d": D,
                "U0": tuple(rng.normal(0, math.sqrt(T_START), 3)),
