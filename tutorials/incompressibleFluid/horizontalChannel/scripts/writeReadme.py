@@ -270,11 +270,11 @@ def sensitivity_reading(r):
         zs.sort(reverse=True)
         big = [x for x in zs if x[0] > 3]
         if not big:
-            lines.append("- `%s` (%s): every statistic within 3 combined standard "
+            lines.append("- `%s`, %s: every statistic within 3 combined standard "
                          "errors of `%s` (largest: %s, %.1f s.e.)."
                          % (v, text, ref, zs[0][1], zs[0][0]))
         else:
-            lines.append("- `%s` (%s): moves %s." % (v, text, "; ".join(
+            lines.append("- `%s`, %s: moves %s." % (v, text, "; ".join(
                 "%s by %+.0f %% (%.0f s.e.)" % (name, 100*rel, zz)
                 for zz, name, rel in big)))
     return ("Each control against its reference, from the table (beyond 3 combined "
@@ -305,14 +305,23 @@ def spin_ratios(r):
 
         def q(key):
             return " / ".join("%.3g" % float(x["%s_q%02d" % (key, p)]) for p in (1, 10, 50, 90, 99))
+        n, out = r.s(v, "liftEvaluations"), r.s(v, "liftOutside")
+        inrun = ("{:,} of {:,} ({:.4f} %)".format(out, n, 100*out/n)
+                 if math.isfinite(n) and n > 0 else "-")
         rows.append(["`%s`" % v, x["lift"], q("Gamma"), q("Rep"), q("ReR"),
                      "%.1f %%" % (100*float(x["GammaAbove1"])),
                      "%.2f %%" % (100*float(x["outsideLoth"])),
-                     "%.1f %%" % (100*float(x["outsideOesterleBuiDinh"]))])
+                     "%.1f %%" % (100*float(x["outsideOesterleBuiDinh"])), inrun])
     return table(["variant", "lift coefficient", "Gamma: 1 / 10 / 50 / 90 / 99 % quantiles",
                   "Re_p: quantiles", "Re_R: quantiles", "samples with Gamma > 1",
                   "outside Loth's range (Re_p < 2000, Gamma < 10)",
-                  "outside Oesterle & Bui Dinh's (10 < Re_p < 140, 1 < Gamma < 6)"], rows)
+                  "outside Oesterle & Bui Dinh's (10 < Re_p < 140, 1 < Gamma < 6)",
+                  "the run's own count: lift evaluations outside its coefficient's "
+                  "range, sampling window"], rows) + (
+        "\n\n(Last column: `summary.csv` columns `liftOutside`, `liftEvaluations`, "
+        "summed from the `rotationalLift` log line of every time step of the sampling "
+        "window: every parcel, with the air's fluctuation; the fluid torque's count "
+        "is in `torqueOutside`, `torqueEvaluations`.)")
 
 
 def force_ranges(r):
@@ -521,7 +530,8 @@ def loading(r):
     return ("For `%s`: granular temperature T = (u'^2 + v'^2 + w'^2)/3 = %.2f m2/s2 "
             "from its rms velocities; a bead collides with others f = 4 n d^2 "
             "sqrt(pi T) = %.3g n times per second (n beads per m3, kinetic theory of "
-            "a dilute gas of equal spheres), and hits a wall %.3g impacts per metre x "
+            "a dilute gas of equal spheres, taken as isotropic), and hits a wall %.2f "
+            "impacts per metre x "
             "%.1f m/s = %.1f times per second. The two rates are equal at n = %.3g "
             "per m3, a mass loading eta = n m_p u_p/(rho_air U_bulk) = **%.2f** "
             "(m_p = %.3g kg, u_p = %.1f m/s, U_bulk = %.2f m/s). At a loading eta the "
@@ -540,7 +550,7 @@ def lift_budget(r):
     return ("Impulse-weighted k_n: %.3f +- %.3f with the rotational lift (`%s`), "
             "%.3f +- %.3f without it (`steel.noLift`). The walls' net upward "
             "momentum per unit of incident wall-normal momentum, k_n - 1, is %.3f "
-            "with the lift and %.3f without: the lift carries **%.0f +- %.0f %%** of "
+            "with the lift and %.3f without: the lift carries **%.0f +- %.1f %%** of "
             "what the walls must supply without it." % (
                 a, sa, DEFAULT, b, sb, a - 1, b - 1, 100*share, 100*share_se))
 
