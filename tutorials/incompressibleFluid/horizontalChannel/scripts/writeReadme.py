@@ -306,7 +306,7 @@ def spin_ratios(r):
         def q(key):
             return " / ".join("%.3g" % float(x["%s_q%02d" % (key, p)]) for p in (1, 10, 50, 90, 99))
         n, out = r.s(v, "liftEvaluations"), r.s(v, "liftOutside")
-        inrun = ("{:,} of {:,} ({:.4f} %)".format(out, n, 100*out/n)
+        inrun = ("{:,} of {:,} ({:.4f} %)".format(int(out), int(n), 100*out/n)
                  if math.isfinite(n) and n > 0 else "-")
         rows.append(["`%s`" % v, x["lift"], q("Gamma"), q("Rep"), q("ReR"),
                      "%.1f %%" % (100*float(x["GammaAbove1"])),
