@@ -148,25 +148,26 @@ template<bool withSpin, class Uniform01, class Coefficients>
     const Vec3& emptyDirection
 )
 {
-    WallHit hit;
     if (!(velocity.dot(wallNormal) < 0))
     {
-        return hit;
+        return WallHit{};
     }
     const Vec3 v0(velocity);
     const double spin0Sqr = withSpin ? spin.squaredNorm() : 0;
-    static_cast<RoughWallReport&>(hit) = collideWithRoughWall<withSpin>
-    (
-        velocity, spin, wallNormal, radius, p, uniform01, emptyDirection
-    );
-    hit.intoWall = true;
-    hit.coefficients = wallHitCoefficients(v0, velocity, wallNormal);
-    hit.speedSqrLoss = v0.squaredNorm() - velocity.squaredNorm();
-    if constexpr (withSpin)
+
+    // Built in place, in this order (a braced list is evaluated left to
+    // right): the collisions, then what they did
+    return WallHit
     {
-        hit.spinSqrLoss = spin0Sqr - spin.squaredNorm();
-    }
-    return hit;
+        collideWithRoughWall<withSpin>
+        (
+            velocity, spin, wallNormal, radius, p, uniform01, emptyDirection
+        ),
+        true,
+        wallHitCoefficients(v0, velocity, wallNormal),
+        v0.squaredNorm() - velocity.squaredNorm(),
+        withSpin ? spin0Sqr - spin.squaredNorm() : 0
+    };
 }
 
 //- Closed forms (2.6) (rolling/no-slip) and (2.7) (sliding) as corrected,
