@@ -9,10 +9,12 @@
 //   k_t = V''_x / V'_x
 //   k_Omega = r Omega''_z / V'_x
 // and the closed forms (2.6)/(2.7) as corrected in the model notes, the
-// independent oracle of the vector collision for in-plane spin.
+// independent oracle of the vector collision for in-plane spin; and
+// collideAndMeasure, the hit with what the statistics count of it.
 #pragma once
 
 #include "facetCollision.hpp"
+#include "roughWallCollision.hpp"
 
 #include <cmath>
 
@@ -92,8 +94,9 @@ struct WallHitCoefficients
 
 //- k_n and k_t (2.5) of a wall hit from the incident (v1) and rebound (v2)
 //  velocities relative to the wall, k_t along the incident tangential
-//  velocity (t = its direction)
-inline WallHitCoefficients wallHitCoefficients
+//  velocity (t = its direction). Inlined into collideAndMeasure: called
+//  once per hit, out of line it costs a call and the vectors' stores
+[[gnu::always_inline]] inline WallHitCoefficients wallHitCoefficients
 (
     const Vec3& v1,
     const Vec3& v2,
@@ -115,6 +118,56 @@ inline WallHitCoefficients wallHitCoefficients
     hit.vtOut = v2.dot(t);
     hit.k = restitutionCoefficients(vx1, vy1, hit.vtOut, hit.vnOut, 0);
     return hit;
+}
+
+//- One wall hit as the statistics count it: the core's report of the facet
+//  collisions, k_n and k_t with the velocities of their ratios, and the
+//  losses of |v|^2 and |omega|^2 (the kinetic energies per unit mass and per
+//  unit moment of inertia, times two)
+struct WallHit : RoughWallReport
+{
+    bool intoWall = false;         //!< false: not moving into the wall
+    WallHitCoefficients coefficients;
+    double speedSqrLoss = 0;       //!< |v'|^2 - |v''|^2
+    double spinSqrLoss = 0;        //!< |omega'|^2 - |omega''|^2 (withSpin)
+};
+
+//- collideWithRoughWall (same arguments) for a particle moving into the wall
+//  (velocity.dot(wallNormal) < 0), and what the statistics need of the hit:
+//  one call per hit. A particle not moving into the wall is left unchanged
+//  (intoWall false, nothing else set)
+template<bool withSpin, class Uniform01, class Coefficients>
+[[gnu::always_inline]] inline WallHit collideAndMeasure
+(
+    Vec3& velocity,
+    Vec3& spin,
+    const Vec3& wallNormal,
+    double radius,
+    const RoughWallParametersOf<Coefficients>& p,
+    Uniform01& uniform01,
+    const Vec3& emptyDirection
+)
+{
+    if (!(velocity.dot(wallNormal) < 0))
+    {
+        return WallHit{};
+    }
+    const Vec3 v0(velocity);
+    const double spin0Sqr = withSpin ? spin.squaredNorm() : 0;
+
+    // Built in place, in this order (a braced list is evaluated left to
+    // right): the collisions, then what they did
+    return WallHit
+    {
+        collideWithRoughWall<withSpin>
+        (
+            velocity, spin, wallNormal, radius, p, uniform01, emptyDirection
+        ),
+        true,
+        wallHitCoefficients(v0, velocity, wallNormal),
+        v0.squaredNorm() - velocity.squaredNorm(),
+        withSpin ? spin0Sqr - spin.squaredNorm() : 0
+    };
 }
 
 //- Closed forms (2.6) (rolling/no-slip) and (2.7) (sliding) as corrected,

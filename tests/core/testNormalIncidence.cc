@@ -343,3 +343,68 @@ TEST(WallHitCoefficients, HandDerivedValues)
             << c.what;
     }
 }
+
+
+// collideAndMeasure: the hit and what the statistics count of it, one call.
+// Oracle: a smooth wall (Delta = 0), where the hit is one sliding collision
+// with the mean wall, written here from the model notes, section 4: with
+// N = y, V' = (3, -4, 0), e = 0.8, mu0 = muD = 0.1 the slip 3 exceeds
+// 3.5 mu0 (1 + e) |V'.N| = 2.52, so V''.N = 0.8*4 = 3.2, V''.t = 3 - muD
+// (1 + e) 4 = 2.28, and the spin gains |Delta omega| = 2.5 muD (1 + e) 4 / r
+// = 3.6 rad/s for r = 0.5 (I = 0.4 m r^2); hence k_n = 0.8, k_t = 0.76,
+// |V'|^2 - |V''|^2 = 25 - 2.28^2 - 3.2^2 = 9.5616 and |omega'|^2 -
+// |omega''|^2 = -12.96. A particle leaving the wall is left alone.
+TEST(CollideAndMeasure, SmoothWallHandDerived)
+{
+    RoughWallParameters p;
+    p.material = FacetMaterial{0.8, 0.1, 0.1};
+    p.roughnessAngle = 0;
+    const Vec3 N(0, 1, 0);
+    std::mt19937_64 gen(1);
+    std::uniform_real_distribution<double> u(0, 1);
+    auto uniform01 = [&]() { return u(gen); };
+
+    Vec3 v(3, -4, 0), w(Vec3::Zero());
+    const WallHit hit = collideAndMeasure<true>
+    (
+        v, w, N, 0.5, p, uniform01, Vec3::Zero()
+    );
+    EXPECT_TRUE(hit.intoWall);
+    EXPECT_EQ(hit.facetCollisions, 1);
+    EXPECT_EQ(hit.sliding, 1);
+    EXPECT_NEAR(v.x(), 2.28, 1e-14);
+    EXPECT_NEAR(v.y(), 3.2, 1e-14);
+    EXPECT_TRUE(hit.coefficients.hasKt);
+    EXPECT_NEAR(hit.coefficients.k.kn, 0.8, 1e-14);
+    EXPECT_NEAR(hit.coefficients.k.kt, 0.76, 1e-14);
+    EXPECT_NEAR(hit.coefficients.vnIn, 4, 1e-14);
+    EXPECT_NEAR(hit.coefficients.vnOut, 3.2, 1e-14);
+    EXPECT_NEAR(hit.coefficients.vtIn, 3, 1e-14);
+    EXPECT_NEAR(hit.coefficients.vtOut, 2.28, 1e-14);
+    EXPECT_NEAR(hit.speedSqrLoss, 9.5616, 1e-12);
+    EXPECT_NEAR(hit.spinSqrLoss, -12.96, 1e-12);
+
+    // Without spin: the same velocity, no spin loss
+    Vec3 v2(3, -4, 0), w2(Vec3::Zero());
+    const WallHit noSpin = collideAndMeasure<false>
+    (
+        v2, w2, N, 0.5, p, uniform01, Vec3::Zero()
+    );
+    EXPECT_NEAR(v2.x(), 2.28, 1e-14);
+    EXPECT_EQ(noSpin.spinSqrLoss, 0);
+    EXPECT_NEAR(noSpin.speedSqrLoss, 9.5616, 1e-12);
+
+    // Leaving the wall (or grazing it): unchanged, not a hit
+    for (const Vec3& away : {Vec3(1, 1, 0), Vec3(1, 0, 0)})
+    {
+        Vec3 v3(away), w3(0, 0, 2);
+        const WallHit none = collideAndMeasure<true>
+        (
+            v3, w3, N, 0.5, p, uniform01, Vec3::Zero()
+        );
+        EXPECT_FALSE(none.intoWall);
+        EXPECT_EQ(none.facetCollisions, 0);
+        EXPECT_EQ(v3, away);
+        EXPECT_EQ(w3, Vec3(0, 0, 2));
+    }
+}

@@ -31,45 +31,44 @@ def rough(body, angle=None):
 
 
 IN = b.IN_PATCH
-POSITIVE = "a length > 0 [m]"
+key = b.key
+POSITIVE = "> 0"
 
-#: name, settings, texts that the log must contain
+#: name, settings, fragments of the error message: the keyword, the scope
+#: and the reason (the bound or rule broken, the value found, the closest
+#: keyword)
 CASES = [
     ("Ra negative", rough("Ra -1e-6; RSm 50e-6;"),
-     ["keyword 'Ra'", IN, POSITIVE]),
+     [key("Ra"), IN, POSITIVE, "'-1e-06'"]),
     ("Ra zero", rough("Ra 0; RSm 50e-6;"),
-     ["keyword 'Ra'", IN, POSITIVE]),
+     [key("Ra"), IN, POSITIVE, "'0'"]),
     ("Rq negative", rough("Rq -2e-6; RSm 50e-6;"),
-     ["keyword 'Rq'", IN, POSITIVE]),
+     [key("Rq"), IN, POSITIVE, "'-2e-06'"]),
     ("Rz zero", rough("Rz 0; RSm 50e-6;"),
-     ["keyword 'Rz'", IN, POSITIVE]),
+     [key("Rz"), IN, POSITIVE, "'0'"]),
     # Not a number: read as a number of any sign (the sign is checked
     # next), so "-inf", not -GREAT's digits, for the open lower bound
     ("Ra not a number", rough("Ra abc; RSm 50e-6;"),
-     ["keyword 'Ra'", IN, "'abc'", "a number in [-inf, inf]"]),
+     [key("Ra"), IN, "'abc'", b.NUMBER, "[-inf, inf]"]),
     ("RSm zero", rough("Ra 1e-6; RSm 0;"),
-     ["keyword 'RSm'", IN, POSITIVE]),
+     [key("RSm"), IN, POSITIVE, "'0'"]),
     ("RSm missing", rough("Ra 1e-6;"),
-     ["keyword 'RSm'", IN, "(mandatory)", "missing"]),
+     [key("RSm"), IN, "mandatory", "missing"]),
     ("no height", rough("RSm 50e-6;"),
-     ["keyword 'Ra'", IN, "at least one of Ra, Rq, Rz"]),
+     [key("Ra"), IN, "Ra, Rq, Rz", "missing"]),
     ("Rq below Ra", rough("Ra 2e-6; Rq 1.5e-6; RSm 50e-6;"),
-     ["keyword 'Rq'", IN, "Rq >= Ra"]),
+     [key("Rq"), IN, "Rq >= Ra"]),
     ("RSm below Ra", rough("Ra 2e-6; RSm 1e-6;"),
-     ["keyword 'RSm'", IN, "RSm > Ra"]),
+     [key("RSm"), IN, "RSm > Ra"]),
     ("flanks too steep", rough("Rq 2e-6; RSm 10e-6;"),
-     ["keyword 'RSm'", IN, "RSm >= 2 pi Rq", "at most 45"]),
+     [key("RSm"), IN, "RSm >= 2 pi Rq", "45"]),
     ("unknown keyword", rough("Ra 1e-6; Rsm 50e-6;"),
-     ["keyword 'Rsm'", IN,
-      "the keywords of roughness: profile Ra Rq Rz RSm estimate",
-      "closest: RSm", "not a keyword here"]),
+     [key("Rsm"), IN, "roughness", b.closest("RSm")]),
     ("roughness not a dictionary",
      b.settings({"roughnessAngle": None, "roughness": "1e-6"}),
-     ["keyword 'roughness'", IN,
-      'a dictionary { profile "<file>"; } or { Ra ...; RSm ...; }']),
+     [key("roughness"), IN, "dictionary", "'1e-06'"]),
     ("roughnessAngle and roughness", rough("Ra 1e-6; RSm 50e-6;", angle="8"),
-     ["keyword 'roughnessAngle'", IN, "exactly one of the keywords "
-      "roughnessAngle", "both roughnessAngle and roughness"]),
+     [key("roughnessAngle"), IN, "roughness", "both"]),
 ]
 
 

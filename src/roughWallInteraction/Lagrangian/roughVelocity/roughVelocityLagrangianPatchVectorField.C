@@ -33,9 +33,7 @@ License
 #include "LagrangianFields.H"
 #include "roughWallInput.H"
 #include "coreBridge.H"
-#include "roughWallCollision.hpp"
 
-#include <cmath>
 #include <cstdint>
 #include <cstring>
 
@@ -305,57 +303,27 @@ void Foam::roughVelocityLagrangianPatchVectorField::evaluate
     }
 
     const scalarField& d = td();
-    const SubField<vector> U = primitiveSubField();
 
-    // OpenFOAM's normal points out of the fluid, the core's into it
     const vectorField nf(subMesh.nf<vectorField>(fraction));
     const vectorField Uf(subMesh.Uf<vectorField>(fraction));
-
-    // 2-D: the velocity in the plane (the core keeps it there)
     const label emptyCmpt = roughWallCompat::emptyComponent
     (
         roughWallCompat::polyMeshOf(subMesh.mesh())
     );
-    roughWall::Vec3 emptyDirection(roughWall::Vec3::Zero());
-    if (emptyCmpt >= 0)
-    {
-        emptyDirection[emptyCmpt] = 1;
-    }
 
-    using roughWallCompat::toCore;
-    using roughWallCompat::toFoam;
-
-    vectorField U1(U);
+    vectorField U1(primitiveSubField());
 
     forAll(U1, subi)
     {
-        roughWall::Vec3 n(toCore(-nf[subi]));
-        roughWall::Vec3 v(toCore(U[subi] - Uf[subi]));
-
-        if (emptyCmpt >= 0)
-        {
-            n[emptyCmpt] = 0;
-            n /= n.norm();
-            v[emptyCmpt] = 0;
-        }
-
-        // No spin in this library: the core's spin-free path (spin is
-        // neither read nor written)
-        roughWall::Vec3 spin(roughWall::Vec3::Zero());
+        // No spin in this library: the core's spin-free path
+        vector spin(Zero);
         hitUniform01 uniform01(hitSeed(subi + subMesh.start()));
 
-        rough_.collide<false>(v, spin, n, d[subi], uniform01, emptyDirection);
-
-        if (!std::isfinite(v.squaredNorm()))
-        {
-            FatalErrorInFunction
-                << "Non-finite rebound on patch " << patch().name()
-                << " for a particle of diameter " << d[subi]
-                << " with velocity " << U[subi] << " (wall velocity "
-                << Uf[subi] << ")" << exit(FatalError);
-        }
-
-        U1[subi] = toFoam(v) + Uf[subi];
+        rough_.hit<false>
+        (
+            U1[subi], spin, Uf[subi], nf[subi], d[subi], emptyCmpt,
+            uniform01, patch().name()
+        );
     }
 
     LagrangianPatchVectorField::operator=(U1);

@@ -31,9 +31,7 @@ License
 #include "roughWallInput.H"
 #include "foamCompat.H"
 #include "coreBridge.H"
-#include "effectiveRestitution.hpp"
 
-#include <cmath>
 #include <type_traits>
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -150,115 +148,51 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
     const roughWallPatchSettings& settings
 )
 {
-    using roughWall::Vec3;
-
     vector nw;
     vector Up;
     this->owner().patchData(p, pp, nw, Up);
     watchWallVelocity(pp.index(), Up);
 
-    // From here on the core's vectors, relative to the wall. The core's wall
-    // normal points into the fluid, OpenFOAM's out of it
-    using roughWallCompat::toCore;
-    using roughWallCompat::toFoam;
-    Vec3 n(toCore(-nw));
-    Vec3 v(toCore(p.U() - Up));
-
-    // 2-D: the projection onto the solution plane, once. With the empty
-    // components of n, v and (below) the spin exactly zero the core keeps
-    // them zero: its facet normals, impulses and spin changes have no
-    // empty component, so the rebound needs no projection
-    const label emptyCmpt = emptyComponent_;
-    Vec3 emptyDirection(Vec3::Zero());
-    if (emptyCmpt >= 0)
-    {
-        n[emptyCmpt] = 0;
-        n /= n.norm();
-        v[emptyCmpt] = 0;
-        emptyDirection[emptyCmpt] = 1;
-    }
-
-    const scalar Un0 = v.dot(n);
-
-    // Only parcels moving into the wall are changed
-    if (!(Un0 < 0))
-    {
-        return;
-    }
-
-    const Vec3 v0(v);
-    Vec3 omega(Vec3::Zero());
+    vector omega(Zero);
     scalar I = 0;
-
     if constexpr (withSpin)
     {
         I = p.momentOfInertia();
         if (I > 0)
         {
-            // 2-D: only spin about the empty direction keeps the motion in
-            // the plane
-            const vector& L = p.angularMomentum();
-            if (emptyCmpt >= 0)
+            omega = p.angularMomentum()/I;
+            // 2-D: the hit keeps only the spin about the empty direction;
+            // in-plane spin is noted here for the one-time warning
+            if (emptyComponent_ >= 0)
             {
-                watchInPlaneSpin(pp.index(), L);
-                omega[emptyCmpt] = L[emptyCmpt]/I;
-            }
-            else
-            {
-                omega = toCore(L/I);
+                watchInPlaneSpin(pp.index(), p.angularMomentum());
             }
         }
     }
 
-    const scalar omega0Sqr = omega.squaredNorm();
-
     auto& rndGen = this->owner().rndGen();
     cloudUniform01<std::remove_reference_t<decltype(rndGen)>> uniform01(rndGen);
 
-    const roughWall::RoughWallReport report =
-        settings.collide<withSpin>
-        (
-            v, omega, n, p.d(), uniform01, emptyDirection
-        );
+    const roughWall::WallHit hit = settings.hit<withSpin>
+    (
+        p.U(), omega, Up, nw, p.d(), emptyComponent_, uniform01, pp.name()
+    );
 
-    const scalar v1Sqr = v.squaredNorm();
-    const scalar omega1Sqr = omega.squaredNorm();
-
-    if (!std::isfinite(v1Sqr) || !std::isfinite(omega1Sqr))
+    if (!hit.intoWall)
     {
-        FatalErrorInFunction
-            << "Non-finite rebound on patch " << pp.name()
-            << " for a parcel of diameter " << p.d()
-            << " with velocity " << p.U() << " relative to the wall "
-            << toFoam(v0) << " (core result: velocity " << toFoam(v)
-            << ", spin " << toFoam(omega) << ")." << exit(FatalError);
+        return;
     }
 
-    p.U() = toFoam(v) + Up;
-
-    scalar rotationalEnergyLoss = 0;
-
+    // Statistics: the core's k_n, k_t and velocities of the hit, and the
+    // energy lost, translational and rotational
+    scalar energyLoss = 0.5*p.mass()*hit.speedSqrLoss;
     if constexpr (withSpin)
     {
-        p.angularMomentum() = toFoam(I*omega);
-        rotationalEnergyLoss = 0.5*I*(omega0Sqr - omega1Sqr);
+        p.angularMomentum() = I*omega;
+        energyLoss += 0.5*I*hit.spinSqrLoss;
     }
 
-    // Statistics, relative to the wall: k_n, and k_t along the incident
-    // tangential velocity (none at normal incidence), with the velocities
-    // of the impulse-weighted ratios
-    const scalar energyLoss =
-        p.nParticle()
-       *(
-            0.5*p.mass()*(v0.squaredNorm() - v1Sqr)
-          + rotationalEnergyLoss
-        );
-
-    stats_.addHit
-    (
-        pp.index(), report, roughWall::wallHitCoefficients(v0, v, n),
-        energyLoss
-    );
+    stats_.addHit(pp.index(), hit, p.nParticle()*energyLoss);
 }
 
 
