@@ -17,7 +17,13 @@
 //                         particle relaxation time over the carrier's
 //                         Kolmogorov time (R = 0: no correlation)
 //   probability           P = pi/4 (d1 + d2)^2 |u1 - u2| n dt, n the cell's
-//                         number density of real particles
+//                         number density of the real particles of the other
+//                         parcels: a parcel's own weight is left out, since
+//                         with k parcels scattered at random over the cells
+//                         a parcel finds on average k/nCells others in its
+//                         cell, not k/nCells + 1 (counted in, it would add
+//                         one parcel's weight to n: +33 % at 3 parcels per
+//                         cell)
 //   impact point          uniform over the projected disc of radius
 //                         (d1 + d2)/2 normal to u1 - u2
 //   collision             hard spheres of one material density, restitution
@@ -259,6 +265,7 @@ public:
         cellSlot_.assign(nCells_, -1);
         cellState_.clear();
         numberDensity_.clear();
+        occupiedVolume_.clear();
         cumulativeWeight_.resize(sorted_.size());
         std::vector<Moments> moments(nc);
         for (int cell = 0; cell < nCells_; ++cell)
@@ -277,6 +284,7 @@ public:
             }
             cellSlot_[cell] = int(numberDensity_.size());
             numberDensity_.push_back(weight/cellVolume(cell));
+            occupiedVolume_.push_back(cellVolume(cell));
             for (int c = 0; c < nc; ++c)
             {
                 cellState_.push_back
@@ -294,6 +302,18 @@ public:
     {
         const int slot = cellSlot_[cell];
         return slot < 0 ? 0 : numberDensity_[slot];
+    }
+
+    //- Number density, in an occupied cell, of the real particles of the
+    //  parcels other than one of ownWeight real particles in it
+    double othersNumberDensity(int cell, double ownWeight) const
+    {
+        const int slot = cellSlot_[cell];
+        return std::max
+        (
+            0.0,
+            numberDensity_[slot] - ownWeight/occupiedVolume_[slot]
+        );
     }
 
     //- The statistics of class cls in an occupied cell
@@ -350,6 +370,7 @@ private:
     std::vector<int> cellStart_;
     std::vector<int> cellSlot_;
     std::vector<double> numberDensity_;
+    std::vector<double> occupiedVolume_;
     std::vector<double> cumulativeWeight_;
     std::vector<ClassState> cellState_;
     std::vector<ClassState> cloudState_;
@@ -376,7 +397,8 @@ struct PartnerCollisionOutcome
 };
 
 //- One particle's step of the fictitious-partner model: the particle
-//  (u, w, diameter d, in an occupied cell of the statistics) may collide
+//  (u, w, diameter d, of a parcel of ownWeight real particles in an
+//  occupied cell of the statistics) may collide
 //  with partners drawn from its cell; R is the correlation of its
 //  fluctuation with the partner's (0 for none)
 template<bool withSpin, class Uniform01>
@@ -385,6 +407,7 @@ PartnerCollisionOutcome collideWithFictitiousPartners
     Vec3& u,
     Vec3& w,
     double d,
+    double ownWeight,
     int cell,
     double dt,
     double R,
@@ -394,7 +417,7 @@ PartnerCollisionOutcome collideWithFictitiousPartners
 )
 {
     PartnerCollisionOutcome outcome;
-    const double n = statistics.numberDensity(cell);
+    const double n = statistics.othersNumberDensity(cell, ownWeight);
     const int ownClass = statistics.sizeClass(d);
     const auto& own = statistics.classState(cell, ownClass);
     const double uncorrelated = std::sqrt(std::max(0.0, 1 - R*R));

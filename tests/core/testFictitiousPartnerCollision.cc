@@ -226,7 +226,7 @@ double frequency(const Gas& gas, double dt, double R, int steps, Rng& rng, doubl
         {
             Vec3 u = ui, w = Vec3::Zero();
             const auto out = collideWithFictitiousPartners<false>
-                (u, w, gas.d, 0, dt, R, s, settings, rng);
+                (u, w, gas.d, 1, 0, dt, R, s, settings, rng);
             sum += out.collisions;
             sum2 += double(out.collisions)*out.collisions;
             ++n;
@@ -267,7 +267,7 @@ TEST(FictitiousPartnerGas, splitStepKeepsTheFrequency)
     Vec3 u = gas.u[0], w = Vec3::Zero();
     const auto s = gas.statistics();
     const auto out = collideWithFictitiousPartners<false>
-        (u, w, gas.d, 0, 40*dt, 0, s, FictitiousPartnerSettings(), rng);
+        (u, w, gas.d, 1, 0, 40*dt, 0, s, FictitiousPartnerSettings(), rng);
     EXPECT_EQ(out.subSteps, int(std::ceil(out.largestProbability/0.1)));
     EXPECT_GT(out.subSteps, 1);
 }
@@ -302,7 +302,7 @@ void evolve(Gas& gas, double dt, int steps, const PairMaterial& material, Rng& r
         for (Vec3& u : gas.u)
         {
             Vec3 w = Vec3::Zero();
-            collideWithFictitiousPartners<false>(u, w, gas.d, 0, dt, 0, s, settings, rng);
+            collideWithFictitiousPartners<false>(u, w, gas.d, 1, 0, dt, 0, s, settings, rng);
         }
     }
 }
@@ -383,6 +383,8 @@ TEST(FictitiousPartnerStatistics, cellsClassesAndPooling)
     EXPECT_DOUBLE_EQ(s.numberDensity(0), 5.0/2);
     EXPECT_DOUBLE_EQ(s.numberDensity(1), 4.0/4);
     EXPECT_DOUBLE_EQ(s.numberDensity(2), 0);
+    // Without a parcel of weight 2 of cell 0: 3 real particles in 2 m^3
+    EXPECT_DOUBLE_EQ(s.othersNumberDensity(0, 2), 3.0/2);
 
     // Cell 0, class 0: weights 2, 1, 1 at x = 1, 4, -1; y = 0, 0, 2
     const auto& c00 = s.classState(0, 0);
@@ -433,7 +435,7 @@ TEST(FictitiousPartnerGas, partnerMassRatioOfTwoSizes)
     {
         Vec3 u(1, 0, 0), w = Vec3::Zero();
         const auto out = collideWithFictitiousPartners<false>
-            (u, w, d, 0, dt, 0, s, settings, rng);
+            (u, w, d, 1e-9, 0, dt, 0, s, settings, rng);
         if (out.collisions == 1)
         {
             sum += u.x();
@@ -444,6 +446,50 @@ TEST(FictitiousPartnerGas, partnerMassRatioOfTwoSizes)
     const double mean = sum/n, se = std::sqrt((sum2/n - mean*mean)/n);
     EXPECT_GT(n, 50000);
     EXPECT_LT(std::abs(mean - 1.0/9), 4*se) << mean << " +- " << se;
+}
+
+TEST(FictitiousPartnerGas, ownParcelLeftOutOfTheNumberDensity)
+{
+    // Oracle: parcels of weight w scattered uniformly at random over M
+    // equal cells of volume V; the real density is N w/(M V). A particle
+    // meets the other parcels of its cell only: their expected number, seen
+    // from a parcel, is (N - 1)/M. With N = 3M parcels (3 per cell) the
+    // mean collision probability per step, averaged over the parcels, is
+    // that of the density (N - 1) w/(M V), where counting the parcel's own
+    // weight would give (N - 1 + M) w/(M V), a third more.
+    const int M = 200, N = 3*M;
+    const double d = 1e-4, V = 1e-9, w = 2, dt = 1e-4;
+    Rng rng(13);
+    double sumP = 0;
+    long parcels = 0;
+    for (int round = 0; round < 50; ++round)
+    {
+        ParticleCellStatistics s({}, 1000);
+        s.clear(M);
+        std::vector<int> cell(N);
+        for (int i = 0; i < N; ++i)
+        {
+            cell[i] = std::min(int(rng()*M), M - 1);
+            s.add(cell[i], d, w, Vec3::Zero(), Vec3::Zero());
+        }
+        s.finish([V](int) { return V; });
+        FictitiousPartnerSettings settings;
+        settings.maxProbability = 1e9;   // no split: P is the step's
+        for (int i = 0; i < N; ++i)
+        {
+            // A particle at 1 m/s through partners at rest (rms 0): its P
+            // for a typical partner is that of |g| = 1 m/s
+            Vec3 u(1, 0, 0), spin = Vec3::Zero();
+            const auto out = collideWithFictitiousPartners<false>
+                (u, spin, d, w, cell[i], dt, 0, s, settings, rng);
+            sumP += out.largestProbability;
+            ++parcels;
+        }
+    }
+    const double expected =
+        collisionProbability(d, d, 1, (N - 1)*w/(M*V), dt);
+    EXPECT_NEAR(sumP/parcels, expected, 0.02*expected)
+        << sumP/parcels << " vs " << expected;
 }
 
 } // namespace

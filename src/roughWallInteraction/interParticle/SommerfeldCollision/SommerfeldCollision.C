@@ -264,7 +264,8 @@ void Foam::SommerfeldCollision<CloudType>::collide
         const roughWall::PartnerCollisionOutcome outcome =
             roughWall::collideWithFictitiousPartners<withSpin>
             (
-                u, w, p.d(), int(celli), dt, R, statistics_, settings_,
+                u, w, p.d(), p.nParticle(), int(celli), dt, R, statistics_,
+                settings_,
                 uniform01
             );
 
