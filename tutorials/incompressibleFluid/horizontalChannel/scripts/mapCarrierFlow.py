@@ -24,7 +24,15 @@ wall model a wall at rest, while the interpolation to the parcel centre
 the patch faces) still sees the air at y = r near the wall. The other
 fields get the same condition so that no wall value looks imposed.
 
+With --whole-channel (the loading variants, which solve the air with the
+beads): the case's mesh is the carrier's whole channel (height H) and its
+0/ files are the carrier's own (../carrier/0: the carrier's wall
+conditions); only the internal fields of U, k, omega, nut and p are
+written, the carrier's converged flow row by row, the start of the
+coupled run.
+
 Usage: mapCarrierFlow.py CARRIER_CASE CARRIER_TIME TRACKING_CASE DIAMETER
+                         [--whole-channel]
 """
 import os
 import re
@@ -36,6 +44,7 @@ import foamcase as fc
 from foamcase import tutorial as tc
 
 FIELDS = ("U", "k", "omega", "nut")
+SOLVED_FIELDS = FIELDS + ("p",)
 
 
 def carrier_profile(carrier, time, name, mesh):
@@ -56,26 +65,32 @@ def carrier_profile(carrier, time, name, mesh):
     return np.r_[mesh.lo[1], rows, mesh.hi[1]], np.r_[lo, values, hi]
 
 
-def write_field(case, name, values, walls, diameter):
-    """The case's 0/<name> with the mapped internal field and one entry per
-    wall."""
-    path = os.path.join(case, "0", name)
+def fmt(name, v):
+    return "(%.9g 0 0)" % v if name == "U" else "%.9g" % v
+
+
+def replace_internal_field(path, name, values):
+    """The text of the field file path with its uniform internalField
+    replaced by the values."""
     text = fc.read_text(path)
-    vector = name == "U"
-
-    def fmt(v):
-        return "(%.9g 0 0)" % v if vector else "%.9g" % v
-
     internal = "internalField   nonuniform List<%s>\n%d\n(\n%s\n)\n;" % (
-        "vector" if vector else "scalar", len(values),
-        "\n".join(fmt(v) for v in values))
+        "vector" if name == "U" else "scalar", len(values),
+        "\n".join(fmt(name, v) for v in values))
     text, n = re.subn(r"internalField\s+uniform[^;]*;", lambda m: internal,
                       text, count=1)
     if n != 1:
         raise RuntimeError(path + ": no uniform internalField to replace")
+    return text
+
+
+def write_field(case, name, values, walls, diameter):
+    """The case's 0/<name> with the mapped internal field and one entry per
+    wall."""
+    path = os.path.join(case, "0", name)
+    text = replace_internal_field(path, name, values)
     block = "".join(
         "    %s\n    {\n        type            calculated;\n"
-        "        value           uniform %s;\n    }\n\n" % (wall, fmt(v))
+        "        value           uniform %s;\n    }\n\n" % (wall, fmt(name, v))
         for wall, v in zip(tc.WALLS, walls))
     text, n = re.subn(r'    "\(lowerWall\|upperWall\)"\s*\{[^}]*\}\s*\n',
                       lambda m: block, text, count=1)
@@ -91,12 +106,50 @@ def write_field(case, name, values, walls, diameter):
         f.write(text)
 
 
+def map_whole_channel(carrier, time, case, cmesh, tmesh):
+    """The carrier's converged flow as the internal fields of the case's
+    0/ (the carrier's own files, wall conditions kept)."""
+    height = cmesh.hi[1] - cmesh.lo[1]
+    if abs((tmesh.hi[1] - tmesh.lo[1]) - height) > 1e-9*height:
+        raise SystemExit("mapCarrierFlow: --whole-channel needs the "
+                         "carrier's height %.9g m" % height)
+    y = tmesh.cell_centres[:, 1]
+    for name in SOLVED_FIELDS:
+        yp, vp = carrier_profile(carrier, time, name, cmesh)
+        path = os.path.join(case, "0", name)
+        text = replace_internal_field(path, name, np.interp(y, yp, vp))
+        with open(path, "w") as f:
+            f.write(text)
+    # The carrier's driving pressure gradient, read by meanVelocityForce at
+    # the start (else it starts from 0 and the first steps jump)
+    gradients = re.findall(r"pressure gradient = (%s)" % fc.NUMBER,
+                           fc.read_text(os.path.join(carrier, "log.foamRun")))
+    if not gradients:
+        raise SystemExit("mapCarrierFlow: no pressure gradient in the "
+                         "carrier's log.foamRun")
+    os.makedirs(os.path.join(case, "0", "uniform"), exist_ok=True)
+    with open(os.path.join(case, "0", "uniform",
+                           "drivingPressureGradientProperties"), "w") as f:
+        f.write("FoamFile\n{\n    format      ascii;\n    class       "
+                "dictionary;\n    object      "
+                "drivingPressureGradientProperties;\n}\n\ngradient        "
+                "%s;\n" % gradients[-1])
+    print("mapCarrierFlow: the carrier's flow at %s on the whole channel "
+          "(H = %g m), pressure gradient %s m/s2" % (time, height,
+                                                      gradients[-1]))
+
+
 def main():
     carrier, time, case = sys.argv[1], sys.argv[2], sys.argv[3]
     diameter = float(sys.argv[4])
     r = 0.5*diameter
     cmesh = tc.read_mesh(carrier)
     tmesh = tc.read_mesh(case)
+    if sys.argv[5:] == ["--whole-channel"]:
+        map_whole_channel(carrier, time, case, cmesh, tmesh)
+        return
+    if sys.argv[5:]:
+        raise SystemExit("mapCarrierFlow: unknown option %s" % sys.argv[5])
     height = cmesh.hi[1] - cmesh.lo[1]
     theight = tmesh.hi[1] - tmesh.lo[1]
     if abs(theight - (height - diameter)) > 1e-9*height:

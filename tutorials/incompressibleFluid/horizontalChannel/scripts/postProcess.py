@@ -29,10 +29,13 @@ Re_R = |Omega_rel| d^2/nu, Gamma = Re_R/(2 Re_p). The lift in the run uses
 the air velocity with the dispersion model's fluctuation, which is not
 written: these are the ratios of the mean flow.
 
-Statistics: the parcels do not interact (one-way coupling, no parcel-parcel
-collisions), so they are independent realisations. They are split into
-N_GROUPS groups by their id; the standard error of every statistic is the
-jackknife (leave-one-group-out) estimate over the groups. The samples of one
+Statistics: in the variants without loading the parcels do not interact
+(one-way coupling, no parcel-parcel collisions), so they are independent
+realisations. They are split into N_GROUPS groups by their id; the standard
+error of every statistic is the jackknife (leave-one-group-out) estimate
+over the groups. In the loading variants the parcels act on each other,
+through the air and through collisions: there the groups are N_BLOCKS
+consecutive time blocks of the sampling window instead. The samples of one
 parcel at different times are correlated; keeping whole parcels in one group
 makes the estimate account for that. The wall statistics (impacts, the
 rough-wall model's impulse-weighted k_n and k_t) exist only as totals over
@@ -40,6 +43,14 @@ all parcels at each write time: their standard error is the jackknife over
 N_BLOCKS consecutive blocks of the sampling window, each a sum over
 thousands of independent parcels (the blocks are longer than a bead's
 velocity relaxation time, so neighbouring blocks are nearly uncorrelated).
+
+Loading variants (massLoading in caseInfo), also in summary.csv: the mass
+loading reached (bead over air mass flux), the collisions between beads
+per bead per second (the Sommerfeld model's log line of every step), the
+wall impacts per bead per second, and the air's pressure gradient (the
+meanVelocityForce's log line of every step), each a mean over the sampling
+window with the block-jackknife standard error; loading.png draws their
+profiles and the air's velocity at the end of the run.
 
 Usage: postProcess.py OUT_DIR CASE_DIR [CASE_DIR ...]
 """
@@ -164,12 +175,13 @@ def jackknife(stat, sums):
     return value, se
 
 
-def air_profile(case):
-    """(y', u, du/dy) of the mapped air velocity of a tracking case (rows
-    of cells; y' the tracking coordinate)."""
+def air_profile(case, time="0"):
+    """(y', u, du/dy) of the air velocity of a tracking case at a time
+    (rows of cells; y' the tracking coordinate): at 0 the mapped carrier
+    flow."""
     mesh = tc.read_mesh(case)
     y = mesh.cell_centres[:, 1]
-    U = fc.internal_field(os.path.join(case, "0", "U"))[:, 0]
+    U = fc.internal_field(os.path.join(case, time, "U"))[:, 0]
     rows, inv = np.unique(np.round(y, 12), return_inverse=True)
     u = np.bincount(inv, weights=U)/np.bincount(inv)
     return rows, u, np.gradient(u, rows)
@@ -207,20 +219,117 @@ def outside(rng, Rep, gamma):
     return float(np.mean(out))
 
 
+def is_loading(info):
+    """A loading variant: the air solved with the beads (massLoading)."""
+    return isinstance(info.get("massLoading"), float) \
+        and "trackingOffset" in info and info["trackingOffset"] == 0
+
+
+def interacting(info):
+    """Parcels that act on each other (through the air or collisions)."""
+    return info.get("twoWayCoupling", "false") == "true" \
+        or info.get("collisions", "none") != "none"
+
+
+STEP_SERIES = {
+    # name: (pattern of a log line, the last match of a step counts)
+    "interParticleFrequency":
+        re.compile(r"^\s*Sommerfeld collisions: (%s) per particle per second"
+                   % fc.NUMBER),
+    "pressureGradient":
+        re.compile(r"^\s*Pressure gradient source: .*pressure gradient = (%s)"
+                   % fc.NUMBER),
+}
+
+
+def step_series(case, name):
+    """(times, values) of a quantity the log writes every step (the last
+    value written in a step)."""
+    pattern = STEP_SERIES[name]
+    values = {}
+    time = None
+    with open(os.path.join(case, "log.foamRun")) as f:
+        for line in f:
+            m = TIME_LINE.match(line)
+            if m:
+                time = float(m.group(1))
+                continue
+            m = pattern.match(line)
+            if m and time is not None:
+                values[time] = float(m.group(1))
+    t = np.array(sorted(values))
+    return t, np.array([values[x] for x in t])
+
+
+def block_mean(t, v, t0, t1):
+    """Mean over the steps in (t0, t1] and its standard error from
+    N_BLOCKS consecutive blocks (the steps of a block are correlated, the
+    blocks nearly not)."""
+    ok = (t > t0 + EPS_TIME) & (t <= t1 + EPS_TIME)
+    v = v[ok]
+    if len(v) < N_BLOCKS:
+        return np.nan, np.nan
+    means = np.array([b.mean() for b in np.array_split(v, N_BLOCKS)])
+    return float(v.mean()), float(means.std(ddof=1)/np.sqrt(N_BLOCKS))
+
+
+def loading_statistics(case, info, summary, t0, t1):
+    """The loading variants' statistics over the window (see the module's
+    docstring)."""
+    out = {}
+    mesh = tc.read_mesh(case)
+    volume = float(np.prod(mesh.hi - mesh.lo))
+    props = fc.read_text(os.path.join(case, "constant", "physicalProperties"))
+    rho = float(re.search(r"^rho\s+([^;]+);", props, re.M).group(1))
+    cloud = fc.read_text(os.path.join(case, "constant", "cloudProperties"))
+    rhoP = float(re.search(r"^\s*rho0\s+([^;]+);", cloud, re.M).group(1))
+    mass = rhoP*np.pi/6*info["diameter"]**3
+    ubulk = carrier_statistics(info)["Ubulk"]
+    # The beads the air carries: none one-way (loading0)
+    coupled = info.get("twoWayCoupling", "false") == "true"
+    beads = info["nParcels"]*info["nParticle"] if coupled else 0
+    # Bead mass flux over air mass flux through a cross-section:
+    # (beads m_p <u_p>/L)/(rho U_bulk A) = beads m_p <u_p>/(rho U_bulk V)
+    scale = beads*mass/(rho*ubulk*volume)
+    out["massLoadingReached"] = scale*summary["meanUx"]
+    out["massLoadingReached_se"] = scale*summary["meanUx_se"]
+    out["beadVolumeFraction"] = beads*np.pi/6*info["diameter"]**3/volume
+    for name in STEP_SERIES:
+        t, v = step_series(case, name)
+        out[name], out[name + "_se"] = block_mean(t, v, t0, t1)
+    # Wall impacts per bead per second: per metre times the mean speed
+    f, u = summary["impactFrequency"], summary["meanUx"]
+    out["wallImpactRate"] = f*u
+    out["wallImpactRate_se"] = float(np.hypot(summary["impactFrequency_se"]*u,
+                                              f*summary["meanUx_se"]))
+    if np.isfinite(out["interParticleFrequency"]):
+        out["collisionsPerWallImpact"] = out["interParticleFrequency"]/out["wallImpactRate"]
+    # The air at the end of the run (the last write time, which the
+    # pruning keeps), for loading.png
+    last = max((x for x in os.listdir(case) if re.fullmatch(fc.NUMBER, x)
+                and os.path.exists(os.path.join(case, x, "U"))), key=float)
+    rows, u_air, _ = air_profile(case, last)
+    out["airProfile"] = (rows/info["height"], u_air)
+    out["airCentreline"] = float(u_air.max())
+    return out
+
+
 def analyse(case):
     info = tc.read_case_info(case)
     H, d = info["height"], info["diameter"]
     r = 0.5*d
+    # Channel height - tracking coordinate: r on the particle-centre
+    # domain, 0 on the loading variants' whole channel
+    offset = info.get("trackingOffset", r)
     s = np.load(os.path.join(case, "parcelSamples.npz"))
     time, count = s["time"], s["count"]
     snap = np.repeat(np.arange(len(time)), count)
-    y = s["y"].astype(float) + r        # tracking coordinate -> channel height
+    y = s["y"].astype(float) + offset   # tracking coordinate -> channel height
     ux, uy = s["Ux"].astype(float), s["Uy"].astype(float)
     uz = s["Uz"].astype(float) if "Uz" in s else np.zeros_like(ux)
     omega = np.stack([s[k].astype(float) if k in s else np.zeros_like(ux)
                       for k in ("omegaX", "omegaY", "omegaZ")], axis=1)
     spin = 0.5*d*omega[:, 2]     # surface speed of the spin about z [m/s]
-    group = s["id"] % N_GROUPS
 
     # Spin-up history: every write time
     up = y > 0.5*H
@@ -236,16 +345,24 @@ def analyse(case):
     mask = snap >= sampled[0]
     y, ux, uy, uz, spin = y[mask], ux[mask], uy[mask], uz[mask], spin[mask]
     omega = omega[mask]
-    group, snap = group[mask], snap[mask]
-    Rep, ReR, gamma, beta = spin_ratios(case, d, y - r, np.stack([ux, uy, uz], axis=1),
-                                  omega)
+    snap = snap[mask]
+    if interacting(info):
+        # Time blocks of the window (parcels that act on each other are
+        # not independent realisations)
+        n_groups = N_BLOCKS
+        group = np.minimum((snap - sampled[0])*N_BLOCKS//len(sampled), N_BLOCKS - 1)
+    else:
+        n_groups = N_GROUPS
+        group = s["id"][mask] % N_GROUPS
+    Rep, ReR, gamma, beta = spin_ratios(case, d, y - offset,
+                                        np.stack([ux, uy, uz], axis=1), omega)
 
     edges = np.linspace(r, H - r, N_BINS + 1)
     b = np.clip(np.searchsorted(edges, y, side="right") - 1, 0, N_BINS - 1)
     sums = {}
     for k, w in (("n", np.ones_like(y)), ("ux", ux), ("uy", uy),
                  ("ux2", ux*ux), ("uy2", uy*uy)):
-        a = np.zeros((N_GROUPS, N_BINS))
+        a = np.zeros((n_groups, N_BINS))
         np.add.at(a, (group, b), w)
         sums[k] = a
     width = edges[1] - edges[0]
@@ -284,7 +401,7 @@ def analyse(case):
                  ("spin", spin), ("spinX", 0.5*d*omega[:, 0]),
                  ("spinY", 0.5*d*omega[:, 1]),
                  ("spin2", (0.5*d)**2*np.sum(omega**2, axis=1))):
-        a = np.zeros((N_GROUPS, 2))
+        a = np.zeros((n_groups, 2))
         np.add.at(a, (group, late), w)
         scal[k] = a
 
@@ -352,7 +469,8 @@ def analyse(case):
 
     # Wall hits in the window, per parcel and metre travelled
     travelled = info["nParcels"]*summary["meanUx"]*(t1 - t0)
-    impacts = s["wallImpacts"]
+    # (patchCollisionDensity counts a parcel's hit as nParticle impacts)
+    impacts = s["wallImpacts"]/info.get("nParticle", 1)
     model = read_model_statistics(case)
     mstats = window_model_statistics(model, t0, t1) if model is not None else {}
 
@@ -420,6 +538,8 @@ def analyse(case):
             summary[key + "OutsideInRun"] = counts[key + "Outside"]/counts[key + "Evaluations"]
     summary["spinRatios"] = ratios
     summary["spinHistograms"] = hist
+    if is_loading(info):
+        summary.update(loading_statistics(case, info, summary, t0, t1))
     return info, prof, summary, history
 
 
@@ -454,7 +574,13 @@ SUMMARY_COLUMNS = [
     "kn_mean", "kt_mean", "kn_lowerWall", "kt_lowerWall", "kn_upperWall", "kt_upperWall",
     "gammaDeg_lowerWall", "gammaDeg_upperWall", "facetPerHit_lowerWall",
     "facetPerHit_upperWall", "liftEvaluations", "liftOutside", "liftOutsideInRun",
-    "torqueEvaluations", "torqueOutside", "torqueOutsideInRun", "wallClock", "cpuTime"]
+    "torqueEvaluations", "torqueOutside", "torqueOutsideInRun",
+    "massLoading", "twoWayCoupling", "collisions", "nParticle", "trackingOffset",
+    "massLoadingReached", "massLoadingReached_se", "beadVolumeFraction",
+    "interParticleFrequency", "interParticleFrequency_se",
+    "wallImpactRate", "wallImpactRate_se", "collisionsPerWallImpact",
+    "pressureGradient", "pressureGradient_se", "airCentreline",
+    "wallClock", "cpuTime"]
 
 
 def fmt(v):
@@ -704,6 +830,45 @@ def plot_spin_ratios(path, results, d):
     plt.close(fig)
 
 
+def plot_loading(path, results, d, reference):
+    """The loading variants (and the reference, steel): concentration, mean
+    streamwise and rms wall-normal bead velocity, and the air's streamwise
+    velocity at the end of each run."""
+    fig, axs = plt.subplots(1, 4, figsize=(15, 4.8), sharey=True)
+    for k, (info, prof, s, _) in enumerate(reference + results):
+        y = prof["y_over_H"]
+        name = label(info)
+        if is_loading(info):
+            name += " (loading %.2f)" % s.get("massLoadingReached", np.nan)
+        style = dict(marker=MARKERS[k % len(MARKERS)], ms=3.5, capsize=2, lw=1.1)
+        c = prof["concentration"]
+        ok = c > 0
+        line = axs[0].errorbar(c[ok], y[ok], xerr=prof["concentration_se"][ok],
+                               label=name, **style)[0]
+        for ax, col in zip(axs[1:3], ("Ux_mean", "Uy_rms")):
+            v = prof[col]
+            ok = np.isfinite(v)
+            ax.errorbar(v[ok], y[ok], xerr=prof[col + "_se"][ok], **style)
+        if "airProfile" in s:
+            yy, ua = s["airProfile"]
+            axs[3].plot(ua, yy, color=line.get_color(), lw=1.2, label=name)
+    axs[0].set_xlabel("normalised number concentration $n/\\bar{n}$")
+    axs[1].set_xlabel("mean streamwise bead velocity [m/s]")
+    axs[2].set_xlabel("rms wall-normal bead velocity [m/s]")
+    axs[3].set_xlabel("air velocity at the end of the run [m/s]")
+    axs[0].set_ylabel("$y/H$")
+    axs[0].set_ylim(0, 1)
+    axs[0].legend(fontsize=7)
+    axs[3].legend(fontsize=7)
+    for ax in axs:
+        ax.grid(alpha=0.3, which="both")
+    fig.suptitle("Loading variants: two-way coupling and collisions between "
+                 "beads, " + title(d), fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+
+
 def print_summary(results):
     print("\nhorizontalChannel: statistics over the sampling window (standard errors in "
           "brackets)")
@@ -745,13 +910,20 @@ def main():
     d = diameters[0]
     write_profiles(os.path.join(out, "profiles.csv"), results)
     write_summary(os.path.join(out, "summary.csv"), results)
-    plot_concentration(os.path.join(out, "concentration.png"), results, d)
-    plot_velocity(os.path.join(out, "velocity.png"), results, d,
-                  carrier_profile(results[0][0]))
-    plot_wall_hits(os.path.join(out, "wallHits.png"), results, d)
-    plot_spin_up(os.path.join(out, "spinUp.png"), results, d)
+    # The figures of the frozen-air variants, and loading.png of the
+    # loading variants beside the default
+    frozen = [x for x in results if not is_loading(x[0])]
+    loading = [x for x in results if is_loading(x[0])]
+    if frozen:
+        plot_concentration(os.path.join(out, "concentration.png"), frozen, d)
+        plot_velocity(os.path.join(out, "velocity.png"), frozen, d,
+                      carrier_profile(frozen[0][0]))
+        plot_wall_hits(os.path.join(out, "wallHits.png"), frozen, d)
+        plot_spin_up(os.path.join(out, "spinUp.png"), frozen, d)
+        plot_spin_ratios(os.path.join(out, "spinRatios.png"), frozen, d)
+    if loading:
+        plot_loading(os.path.join(out, "loading.png"), loading, d, frozen[:1])
     write_spin_ratios(os.path.join(out, "spinRatios.csv"), results)
-    plot_spin_ratios(os.path.join(out, "spinRatios.png"), results, d)
     write_carrier(os.path.join(out, "carrier.csv"), carrier_statistics(results[0][0]))
     print_summary(results)
 

@@ -105,7 +105,19 @@ CHOICES = (
     ("steel.noSaffmanMei", DEFAULT, "Saffman-Mei shear lift off"),
     ("steel.noDispersion", DEFAULT, "turbulent dispersion off"),
     ("rough5", DEFAULT, "a constant Delta = 5 deg instead of the surface's"),
+    ("loading0", DEFAULT, "the loading variants' set-up, still one-way: the air "
+     "solved on the whole channel with wall functions (cells of 9 bead diameters), "
+     "a bead hitting the wall at its centre"),
+    ("loading0.3", "loading0", "two-way coupling at a mass loading of 0.3"),
+    ("loading1", "loading0", "two-way coupling at a mass loading of 1"),
+    ("loading0.3.collisions", "loading0.3", "collisions between beads at a mass "
+     "loading of 0.3"),
+    ("loading1.collisions", "loading1", "collisions between beads at a mass "
+     "loading of 1"),
 )
+#: The loading variants, in the order of the loading table
+LOADING = ("loading0", "loading0.3", "loading0.3.collisions", "loading1",
+           "loading1.collisions")
 #: The statistics of the sensitivity table: (column, text, format, scale)
 STATS = (
     ("upperFraction", "parcels in the upper half [%]", "%.2f", 100),
@@ -190,6 +202,14 @@ def setup(r, v):
     wall = ("Delta %.2f deg of the surface" % delta if x.get("roughness")
             else "Delta %g deg" % delta)
     parts = [x["geometry"], wall]
+    if x.get("trackingOffset") == "0":
+        parts = ["3D whole channel, wall functions", wall]
+        if x.get("twoWayCoupling") == "true":
+            parts.append("two-way, loading %s" % x["massLoading"])
+        else:
+            parts.append("one-way")
+        if x.get("collisions", "none") != "none":
+            parts.append("collisions between beads")
     if x["geometry"] == "3D" and x["lateralTilt"] != "on" and delta > 0:
         parts.append("no sideways tilt")
     parts.append("lift %s" % x["lift"])
@@ -222,8 +242,9 @@ def results_table(r):
                          pm(s("impactFrequency_upperWall"), s("impactFrequency_upperWall_se")))])
     return table(head, rows) + (
         "\n\n(+- one standard error: the parcel statistics by the jackknife over 20 "
-        "groups of whole parcels, the impacts by the jackknife over 10 time blocks "
-        "of the sampling window. v wall-normal, u streamwise, w spanwise. Impacts: "
+        "groups of whole parcels (the two-way coupled variants, whose parcels act on "
+        "each other: over 10 time blocks of the sampling window), the impacts by "
+        "the jackknife over 10 time blocks of the sampling window. v wall-normal, u streamwise, w spanwise. Impacts: "
         "patchCollisionDensity, wall-normal impact speed above 5 cm/s, per parcel "
         "per metre travelled. `%s`: Delta = 0, the beads end on the floor and its "
         "rms wall-normal velocity, %.4f m/s, is resting contact resolved as "
@@ -541,6 +562,46 @@ def loading(r):
                 mp, u, ubulk, eta_equal, 100*0.1/eta_equal, 100*0.01/eta_equal))
 
 
+def loading_series(r):
+    """The loading variants: loading reached, collisions between beads
+    against wall impacts, the air's pressure gradient"""
+    vs = [v for v in LOADING if v in r.summary]
+    if not vs:
+        return "(no loading variant in the results)"
+    rows = []
+    for v in vs:
+        def s(k):
+            return r.s(v, k)
+        rows.append([
+            "`%s`" % v,
+            pm(s("massLoadingReached"), s("massLoadingReached_se"), "%.3f"),
+            num(s("beadVolumeFraction"), "%.2g"),
+            pm(s("upperFraction"), s("upperFraction_se"), "%.1f", 100),
+            pm(s("UyRms"), s("UyRms_se"), "%.2f"),
+            pm(s("meanUxOverBulk"), s("meanUxOverBulk_se"), "%.3f"),
+            pm(s("wallImpactRate"), s("wallImpactRate_se"), "%.1f"),
+            pm(s("interParticleFrequency"), s("interParticleFrequency_se"), "%.1f")
+            if math.isfinite(s("interParticleFrequency")) else "(off)",
+            num(s("collisionsPerWallImpact"), "%.2f")
+            if math.isfinite(s("interParticleFrequency")) else "-",
+            pm(s("pressureGradient"), s("pressureGradient_se"), "%.0f"),
+            num(s("airCentreline"), "%.2f")])
+    head = ["variant", "mass loading reached", "bead volume fraction",
+            "upper half [%]", "rms v [m/s]", "mean u / U_bulk",
+            "wall impacts per bead per s", "bead-bead collisions per bead per s",
+            "collisions per wall impact", "air pressure gradient [m/s2]",
+            "air centreline velocity at the end [m/s]"]
+    ref = r.s("loading0", "pressureGradient") if "loading0" in r.summary else math.nan
+    return table(head, rows) + (
+        "\n\n(Means over the sampling window +- one standard error, all from 10 "
+        "time blocks: the loading reached is the beads' mass flux over the air's, "
+        "n m_p <u_p>/(rho U_bulk), `loading0` one-way and so 0 for the air; "
+        "bead-bead collisions are the Sommerfeld model's count in the log; the "
+        "pressure gradient is the meanVelocityForce's, which holds the air's bulk "
+        "velocity at 20 m/s: %.0f m/s2 without load on this mesh, against %.1f of "
+        "the wall-resolved carrier.)" % (ref, float(r.carrier["pressureGradient"])))
+
+
 def lift_budget(r):
     """How much of the wall-normal momentum budget the rotational lift carries"""
     a, sa = r.s(DEFAULT, "knImpulse"), r.s(DEFAULT, "knImpulse_se")
@@ -561,6 +622,7 @@ BLOCKS = {
     "crossings": crossings,
     "loading": loading,
     "liftBudget": lift_budget,
+    "loadingSeries": loading_series,
     "sensitivityReading": sensitivity_reading,
     "provenance": provenance,
     "carrier": carrier,
