@@ -30,7 +30,6 @@ License
 #include "SommerfeldCollision.H"
 #include "roughWallInput.H"
 #include "coreBridge.H"
-#include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -117,30 +116,36 @@ void Foam::SommerfeldCollision<CloudType>::readSettings(const dictionary& dict)
 
 
 template<class CloudType>
+roughWall::Vec3 Foam::SommerfeldCollision<CloudType>::spinOf
+(
+    const typename CloudType::parcelType& p
+)
+{
+    if constexpr (parcelCarriesSpin<typename CloudType::parcelType>::value)
+    {
+        return roughWallCompat::toCore
+        (
+            p.angularMomentum()/p.momentOfInertia()
+        );
+    }
+    return roughWall::Vec3::Zero();
+}
+
+
+template<class CloudType>
 void Foam::SommerfeldCollision<CloudType>::gatherStatistics()
 {
-    using parcelType = typename CloudType::parcelType;
-    constexpr bool withSpin = parcelCarriesSpin<parcelType>::value;
-
     CloudType& cloud = this->owner();
     const fvMesh& mesh = cloud.mesh();
 
     statistics_.clear(int(mesh.nCells()));
     forAllIter(typename CloudType, cloud, iter)
     {
-        const parcelType& p = iter();
-        roughWall::Vec3 spin = roughWall::Vec3::Zero();
-        if constexpr (withSpin)
-        {
-            spin = roughWallCompat::toCore
-            (
-                p.angularMomentum()/p.momentOfInertia()
-            );
-        }
+        const auto& p = iter();
         statistics_.add
         (
             int(p.cell()), p.d(), p.nParticle(),
-            roughWallCompat::toCore(p.U()), spin
+            roughWallCompat::toCore(p.U()), spinOf(p)
         );
     }
 
@@ -252,14 +257,7 @@ void Foam::SommerfeldCollision<CloudType>::collide
         }
 
         roughWall::Vec3 u = roughWallCompat::toCore(p.U());
-        roughWall::Vec3 w = roughWall::Vec3::Zero();
-        if constexpr (withSpin)
-        {
-            w = roughWallCompat::toCore
-            (
-                p.angularMomentum()/p.momentOfInertia()
-            );
-        }
+        roughWall::Vec3 w = spinOf(p);
 
         const roughWall::PartnerCollisionOutcome outcome =
             roughWall::collideWithFictitiousPartners<withSpin>
