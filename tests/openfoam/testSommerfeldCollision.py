@@ -31,6 +31,14 @@ Oracles (closed forms written here; none calls the library):
     20,000 particles in one cell, six seeds: +1.5 to +3.3 % at T = 0.21 T1):
     the real particles drift from a Maxwellian while their partners are
     drawn Gaussian; the sampling error of T is 0.7 % here;
+  - the correlation: a last restart, elastic again, with correlation on in
+    a frozen RAS carrier whose epsilon puts the parcels' Kolmogorov Stokes
+    number at ST_K (0.01): the partner's fluctuation is correlated with the
+    parcel's by R = exp(-0.55 St_K^0.4) = 0.92, the relative velocity's
+    variance falls by 1 - R, and so the frequency to
+    sqrt(1 - R) 4 n d^2 sqrt(pi T), within 3 standard errors (the same
+    relation as the core's test, derived there for a Maxwellian gas;
+    St_K from tau_p = rho_p d^2/(18 mu) and tau_K = sqrt(nu/epsilon));
   - parcels conserved: the parcel count of every step equals the injected,
     and the log's real particles of every step are the whole cloud's;
   - --parallel: the same on 2 ranks (the statistics and the log's counts
@@ -72,6 +80,12 @@ N_DENSITY = F_TARGET/(4*D*D*math.sqrt(math.pi*T_START))
 N_PARTICLE = N_DENSITY*VOLUME/PARCELS
 E_COOLING = 0.8
 T1, T2 = "0.25", "1.25"     # end of the elastic run, of the cooling run
+T3 = "1.5"                  # end of the correlated elastic run
+ST_K = 0.01                 # the parcels' Kolmogorov Stokes number there
+RHO_P = 2500.0              # the box's rho0
+NU, RHO = 1.5e-5, 1.2       # the box's carrier
+TAU_P = RHO_P*D*D/(18*NU*RHO)
+EPSILON = NU/(TAU_P/ST_K)**2    # tau_K = sqrt(nu/epsilon) = tau_p/St_K
 
 SPECULAR = """patchInteractionModel roughWallInteraction;
 
@@ -125,6 +139,31 @@ def make_case(platform, path, kind="kinematic", seed=3,
     case.set_control(deltaT="0.0025", endTime=T1, writeControl="runTime",
                      writeInterval="0.05")
     return case
+
+
+def frozen_ras_carrier(case, platform):
+    """A turbulent carrier at rest for the correlation: kEpsilon with
+    uniform k and epsilon (EPSILON), read and never solved"""
+    if platform.foundation:
+        fc.write_text(case.file("constant/momentumTransport"),
+                      fc.foam_header("dictionary", "momentumTransport")
+                      + "simulationType  RAS;\n\nRAS\n{\n    model           "
+                        "kEpsilon;\n    turbulence      on;\n}\n")
+    else:
+        fc.write_text(case.file("constant/turbulenceProperties"),
+                      fc.foam_header("dictionary", "turbulenceProperties")
+                      + "simulationType  RAS;\n\nRAS\n{\n    RASModel        "
+                        "kEpsilon;\n    turbulence      on;\n}\n")
+    for name, dims, value, patch in (
+            ("k", "[0 2 -2 0 0 0 0]", 1e-4, "zeroGradient"),
+            ("epsilon", "[0 2 -3 0 0 0 0]", EPSILON, "zeroGradient"),
+            ("nut", "[0 2 -1 0 0 0 0]", 0, "calculated")):
+        fc.write_text(case.file("0/" + name),
+                      fc.foam_header("volScalarField", name, "0")
+                      + "dimensions      %s;\n\ninternalField   uniform %r;"
+                        "\n\nboundaryField\n{\n    walls\n    {\n"
+                        "        type            %s;\n        value           "
+                        "uniform %r;\n    }\n}\n" % (dims, value, patch, value))
 
 
 def set_model(case, entry):
@@ -216,10 +255,40 @@ def check_gas(case, label):
     t.check(T < 0.4*T_1, "%s: the gas cooled to %.3f of T1" % (label, T/T_1))
 
 
+def check_correlation(case, label):
+    """The correlated elastic restart (see the docstring)"""
+    T_2 = temperature(case, T2)[0]
+    set_model(case, model_entry().replace("correlation     false",
+                                          "correlation     true"))
+    case.set_control(startFrom="latestTime", endTime=T3, writeInterval="0.25")
+    case.solve("log.correlation")
+    check_parcels(case, "log.correlation")
+    t.check(re.search(r"correlation on", case.log("log.correlation"))
+            is not None, "%s: the restart runs with correlation on" % label)
+    T_3 = temperature(case, T3)[0]
+    T_mean = 0.5*(T_2 + T_3)
+    f = frequencies(case, "log.correlation")
+    f_mean = float(np.mean(f))
+    se_f = float(np.std(f, ddof=1))/math.sqrt(len(f))
+    R = math.exp(-0.55*ST_K**0.4)
+    expected = math.sqrt(1 - R)*kinetic_frequency(T_mean)
+    se = math.hypot(se_f, 0.5*expected*math.sqrt(2/(3*PARCELS)))
+    t.check(abs(f_mean - expected) < 3*se,
+            "%s: with the correlation at St_K = %g (R = %.4f) the collision "
+            "frequency %.3f /s against sqrt(1 - R) 4 n d^2 sqrt(pi T) = "
+            "%.3f /s (T = %.4f m^2/s^2, s.e. %.3f, z = %.2f; %.3f /s "
+            "without the correlation)" % (
+                label, ST_K, R, f_mean, expected, T_mean, se,
+                (f_mean - expected)/se, kinetic_frequency(T_mean)))
+
+
 def test_gas(args, platform):
     case = make_case(platform, os.path.join(args.work, "gas"))
+    # The carrier of the correlated restart (no force acts on the parcels)
+    frozen_ras_carrier(case, platform)
     case.mesh()
     check_gas(case, "serial")
+    check_correlation(case, "serial")
 
 
 def test_spin(args, platform):
