@@ -4,9 +4,9 @@
 Usage: checkResults.py [--record FILE] SHORT_RESULTS_DIR [REFERENCE_RESULTS_DIR]
 
 SHORT_RESULTS_DIR is the result of ./Allrun -test (the 3-D default variant
-steel with fewer parcels and a shorter sampling window than the default
-run, the same spin-up); REFERENCE_RESULTS_DIR the committed result of the
-default run (results/).
+steel and the loading variant loading1.collisions, with a shorter sampling
+window than the default run, the same spin-up); REFERENCE_RESULTS_DIR the
+committed result of the default run (results/).
 
 Each check names the faults it is there to catch:
 
@@ -31,6 +31,16 @@ Each check names the faults it is there to catch:
    Faults: anything that moves a statistic of the tutorial (e, mu, Delta,
    the sampler, the spin models, the carrier flow, 2-D scattering) by more
    than BAND_SE s.e.
+4. The loading variant LOADING_VARIANT: its set-up as the run reports it
+   (LOADING_SETUP: two-way coupled, collisions between beads by the
+   Sommerfeld model, nominal loading 1) and every statistic of
+   LOADING_BAND within BAND_SE combined standard errors of the committed
+   one, the collisions between beads and the air's pressure gradient among
+   them.
+   Faults: coupling or the collision model off or without effect, a wrong
+   nParticle (the loading), a broken loading set-up (mesh, wall functions,
+   fvModels), a change of the collision model's frequency or of the
+   momentum the beads give the air.
 """
 import csv
 import math
@@ -61,10 +71,17 @@ SETUP = {"geometry": "3D", "roughness": "Rq=2.87e-6,RSm=122e-6",
 BAND_SE = 4.0
 BAND = ("upperFraction", "UyRms", "UxRms", "UzRms", "meanUxOverBulk",
         "impactFrequency", "knImpulse", "ktImpulse")
+LOADING_VARIANT = "loading1.collisions"
+LOADING_SETUP = {"twoWayCoupling": "true", "collisions": "Sommerfeld",
+                 "massLoading": "1"}
+LOADING_BAND = ("upperFraction", "UyRms", "UxRms", "meanUxOverBulk",
+                "impactFrequency", "massLoadingReached",
+                "interParticleFrequency", "pressureGradient")
 FIGURES = ("concentration.png", "velocity.png", "wallHits.png", "spinUp.png",
-           "spinRatios.png")
+           "spinRatios.png", "loading.png")
 TEXT = {"variant", "wallModel", "geometry", "roughness", "lateralTilt", "e", "muD",
-        "lift", "torque", "shearLift", "dispersion"}
+        "lift", "torque", "shearLift", "dispersion", "twoWayCoupling",
+        "collisions"}
 
 #: The quantitative checks: (check, measured, required, margin)
 records = []
@@ -128,6 +145,32 @@ def write_records(path, run):
             w.writerow(list(r) + [run])
 
 
+def check_setup(variant, row, wanted):
+    """The set-up a variant reports (summary.csv) is the wanted one"""
+    for key, value_wanted in wanted.items():
+        records.append(("%s %s" % (variant, key), row.get(key, ""),
+                        value_wanted,
+                        "ok" if row.get(key) == value_wanted else "wrong"))
+        check(row.get(key) == value_wanted, "%s: %s %s (required %s)"
+              % (variant, key, row.get(key), value_wanted))
+
+
+def check_band(variant, row, ref, keys):
+    """Every statistic of keys within BAND_SE combined standard errors of
+    the committed one"""
+    for key in keys:
+        (x, sx), (r, sr) = value(row, key), value(ref, key)
+        band = BAND_SE*math.hypot(sx, sr)
+        records.append(("%s %s: short - committed" % (variant, key),
+                        "%.3g" % (x - r), "within +-%.3g" % band,
+                        "%.2f" % (abs(x - r)/band) if band > 0
+                        else ("0" if x == r else "inf")))
+        check(abs(x - r) <= band,
+              "%s %s: short run %.4f, committed %.4f, difference "
+              "%.4f within %g combined s.e. (%.4f)"
+              % (variant, key, x, r, x - r, BAND_SE, band))
+
+
 def main():
     args = sys.argv[1:]
     record = None
@@ -141,11 +184,7 @@ def main():
     row = summary[VARIANT]
 
     # 2. The default set-up, as the run reports it
-    for key, wanted in SETUP.items():
-        records.append(("%s %s" % (VARIANT, key), row.get(key, ""), wanted,
-                        "ok" if row.get(key) == wanted else "wrong"))
-        check(row.get(key) == wanted, "%s: %s %s (required %s)"
-              % (VARIANT, key, row.get(key), wanted))
+    check_setup(VARIANT, row, SETUP)
     uz, se = value(row, "UzRms")
     records.append(("%s UzRms: spanwise motion" % VARIANT, "%.4g" % uz,
                     "> %.3g (%g s.e.)" % (MARGIN_SE*se, MARGIN_SE),
@@ -159,17 +198,18 @@ def main():
                read_results(os.path.join(reference, "summary.csv"))}
         if check(VARIANT in ref, "variant %s in the reference %s"
                  % (VARIANT, reference)):
-            for key in BAND:
-                (x, sx), (r, sr) = value(row, key), value(ref[VARIANT], key)
-                band = BAND_SE*math.hypot(sx, sr)
-                records.append(("%s %s: short - committed" % (VARIANT, key),
-                                "%.3g" % (x - r), "within +-%.3g" % band,
-                                "%.2f" % (abs(x - r)/band) if band > 0
-                                else ("0" if x == r else "inf")))
-                check(abs(x - r) <= band,
-                      "%s %s: short run %.4f, committed %.4f, difference "
-                      "%.4f within %g combined s.e. (%.4f)"
-                      % (VARIANT, key, x, r, x - r, BAND_SE, band))
+            check_band(VARIANT, row, ref[VARIANT], BAND)
+
+    # 4. The loading variant
+    if check(LOADING_VARIANT in summary, "variant %s in the short run"
+             % LOADING_VARIANT):
+        loaded = summary[LOADING_VARIANT]
+        check_setup(LOADING_VARIANT, loaded, LOADING_SETUP)
+        if reference and check(LOADING_VARIANT in ref,
+                               "variant %s in the reference %s"
+                               % (LOADING_VARIANT, reference)):
+            check_band(LOADING_VARIANT, loaded, ref[LOADING_VARIANT],
+                       LOADING_BAND)
 
     if record:
         info = {}

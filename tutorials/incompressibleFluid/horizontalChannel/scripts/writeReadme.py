@@ -468,7 +468,12 @@ def smoke_test(r):
             "spanwise velocity is above %g standard errors (0 in 2-D); %s within "
             "%g combined standard errors of the committed `results/`."
             % (c.VARIANT, ", ".join("%s %s" % kv for kv in c.SETUP.items()),
-               c.MARGIN_SE, ", ".join("`%s`" % k for k in c.BAND), c.BAND_SE))
+               c.MARGIN_SE, ", ".join("`%s`" % k for k in c.BAND), c.BAND_SE)
+            + " The loading variant `%s` reports %s, and its %s are within %g "
+            "combined standard errors of the committed ones."
+            % (c.LOADING_VARIANT,
+               ", ".join("%s %s" % kv for kv in c.LOADING_SETUP.items()),
+               ", ".join("`%s`" % k for k in c.LOADING_BAND), c.BAND_SE))
     out = [text]
     for version, rows in sorted(r.smoke.items(), reverse=True):
         # the run's commit stays in the CSV (its "run" column)
@@ -562,6 +567,34 @@ def loading(r):
                 mp, u, ubulk, eta_equal, 100*0.1/eta_equal, 100*0.01/eta_equal))
 
 
+def one_way_reach(r):
+    """Which statistics of the one-way set-up (loading0) hold at each
+    loading with coupling and collisions together (beyond 3 combined
+    standard errors: moved)"""
+    if "loading0" not in r.summary:
+        return ""
+    out = []
+    for v, loading in (("loading0.3.collisions", "0.3"),
+                       ("loading1.collisions", "1")):
+        if v not in r.summary:
+            continue
+        held, moved = [], []
+        for key, name, fmt, scale in STATS:
+            a, sa = r.s("loading0", key), r.s("loading0", key + "_se")
+            b, sb = r.s(v, key), r.s(v, key + "_se")
+            zz = z(a, sa, b, sb)
+            if zz > 3:
+                moved.append("%s by %+.0f %%" % (name, 100*(b - a)/a))
+            else:
+                held.append(name)
+        out.append("at a loading of %s (`%s` against `loading0`) %s; %s" % (
+            loading, v, "moved: " + ", ".join(moved) if moved
+            else "nothing moved", "held: " + ", ".join(held) if held
+            else "nothing held"))
+    return ("\n\nWith coupling and collisions together, beyond 3 combined "
+            "standard errors of the one-way set-up, " + "; ".join(out) + ".")
+
+
 def loading_series(r):
     """The loading variants: loading reached, collisions between beads
     against wall impacts, the air's pressure gradient"""
@@ -584,7 +617,7 @@ def loading_series(r):
             if math.isfinite(s("interParticleFrequency")) else "(off)",
             num(s("collisionsPerWallImpact"), "%.2f")
             if math.isfinite(s("interParticleFrequency")) else "-",
-            pm(s("pressureGradient"), s("pressureGradient_se"), "%.0f"),
+            pm(s("pressureGradient"), s("pressureGradient_se"), "%.1f"),
             num(s("airCentreline"), "%.2f")])
     head = ["variant", "mass loading reached", "bead volume fraction",
             "upper half [%]", "rms v [m/s]", "mean u / U_bulk",
@@ -592,7 +625,7 @@ def loading_series(r):
             "collisions per wall impact", "air pressure gradient [m/s2]",
             "air centreline velocity at the end [m/s]"]
     ref = r.s("loading0", "pressureGradient") if "loading0" in r.summary else math.nan
-    return table(head, rows) + (
+    return table(head, rows) + one_way_reach(r) + (
         "\n\n(Means over the sampling window +- one standard error, all from 10 "
         "time blocks: the loading reached is the beads' mass flux over the air's, "
         "n m_p <u_p>/(rho U_bulk), `loading0` one-way and so 0 for the air; "
