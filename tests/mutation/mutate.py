@@ -26,7 +26,17 @@ Usage:
   tests/mutation/mutate.py --level core|openfoam [--report FILE]
       [--only NAME,NAME] [--platform openfoam14] [--work DIR] [--keep]
       [--baseline] [--overlay BRANCH] [--jobs N]
+      [--incremental] [--record]
   tests/mutation/mutate.py --stale-only     (the fault list's texts only)
+
+Core level, kills kept (killed-core.json): a core fault's kill depends only
+on the fault, the files it edits, the test sources of its tests and what
+they include (faultInputs.py). --record writes, for every fault killed in
+the run, the fingerprint of these (SHA-256) with the commit and the tests
+that killed it into tests/mutation/killed-core.json; --incremental runs
+only the faults whose fingerprint differs from the recorded one (a fault
+or a file it depends on changed since) and reports the others as killed
+at the recorded commit. ctest's mutation.core runs --incremental.
 
 With PYTHONPATH=<checkout>/src/python (ctest sets it): the platforms come
 from etc/platforms through foamcase.platforms.
@@ -57,6 +67,24 @@ except ImportError:
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
+KILLED = os.path.join(HERE, "killed-core.json")
+
+sys.path.insert(0, HERE)
+import faultInputs  # noqa: E402
+
+
+def read_killed():
+    try:
+        with open(KILLED) as f:
+            return json.load(f)
+    except OSError:
+        return {}
+
+
+def write_killed(record):
+    with open(KILLED, "w") as f:
+        json.dump(dict(sorted(record.items())), f, indent=2)
+        f.write("\n")
 
 
 def fail(message):
@@ -395,9 +423,19 @@ def write_report(path, level, platform, commit, rows, total, command,
         "| fault | file | tests run | killed by | time [s] |",
         "|---|---|---|---|---|",
     ]
+    unchanged = [r for r in rows if r["status"] == "unchanged"]
+    if unchanged:
+        lines[-3:-3] = [
+            "%d faults unchanged since their recorded kill (--incremental: "
+            "the fault, the files it edits, its tests' sources and what "
+            "they include are those of the commit given, "
+            "tests/mutation/killed-core.json); %d run." % (
+                len(unchanged), len(rows) - len(unchanged)), ""]
     for r in rows:
         killed = ", ".join(r["killed"]) if r["killed"] else (
             "**SURVIVED**" if r["status"] == "ran" else "**" + r["status"] + "**")
+        if r["status"] == "unchanged":
+            killed += " (at %s)" % r["since"]
         lines.append("| %s | %s | `%s` (%d) | %s | %.0f |" % (
             r["name"], ", ".join(r["files"]),
             r["tests"].replace("|", "\\|"), r["ran"], killed,
@@ -430,6 +468,12 @@ def main():
     parser.add_argument("--overlay", action="append", default=[],
                         help="a branch whose changed files (tests not yet "
                         "merged, e.g. shear) are added to the copy")
+    parser.add_argument("--incremental", action="store_true",
+                        help="core: run only the faults whose fingerprint "
+                        "differs from tests/mutation/killed-core.json")
+    parser.add_argument("--record", action="store_true",
+                        help="core: write the fingerprints of the faults "
+                        "killed in this run to tests/mutation/killed-core.json")
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--timeout", type=int, default=900)
     args = parser.parse_args()
@@ -453,9 +497,38 @@ def main():
                   if args.platform in f.get("platforms", [args.platform])]
     if not faults:
         fail("no fault of level %s selected" % args.level)
+    if (args.incremental or args.record) and args.level != "core":
+        fail("--incremental and --record are for the core level")
 
     start = time.time()
     commit = commit_of(REPO)
+    killed = read_killed() if args.level == "core" else {}
+    prints = {f["name"]: faultInputs.fingerprint(
+        REPO, f, tests_of(f, args.platform)) for f in faults} \
+        if args.level == "core" else {}
+    rows = []
+    if args.incremental:
+        kept = [f for f in faults
+                if killed.get(f["name"], {}).get("fingerprint")
+                == prints[f["name"]]]
+        for f in kept:
+            k = killed[f["name"]]
+            rows.append({"name": f["name"],
+                         "files": sorted({e["file"] for e in f["edits"]}),
+                         "tests": tests_of(f, args.platform), "ran": 0,
+                         "killed": k["killedBy"], "status": "unchanged",
+                         "since": k["commit"], "time": 0.0})
+        faults = [f for f in faults if f not in kept]
+        print("mutation: %d faults unchanged since their recorded kill, %d "
+              "to run" % (len(kept), len(faults)), flush=True)
+        if not faults:
+            if args.report:
+                write_report(args.report, args.level, args.platform, commit,
+                             rows, time.time() - start,
+                             "tests/mutation/mutate.py --level core "
+                             "--incremental", [], len(rows))
+            print("mutation: nothing to run")
+            return
     work = args.work or tempfile.mkdtemp(prefix="roughWallMutation.")
     tree = os.path.join(work, "tree")
     log = os.path.join(work, "mutation.log")
@@ -489,13 +562,14 @@ def main():
         print("baseline: %d tests pass (%.0f s)" % (ran, time.time() - start),
               flush=True)
 
-    command = "tests/mutation/mutate.py --level %s%s%s%s%s" % (
+    command = "tests/mutation/mutate.py --level %s%s%s%s%s%s" % (
         args.level, " --platform " + args.platform
         if args.level == "openfoam" else "",
         " --baseline" if args.baseline else "",
+        " --incremental" if args.incremental else "",
         " --only " + args.only if args.only else "",
         "".join(" --overlay " + o for o in args.overlay))
-    rows = []
+    planned = len(rows) + len(faults)
     for fault in faults:
         t0 = time.time()
         regex = tests_of(fault, args.platform)
@@ -522,7 +596,7 @@ def main():
             # After every fault: an interrupted run keeps what it found
             write_report(args.report, args.level, args.platform, commit,
                          rows, time.time() - start, command, overlays,
-                         len(faults))
+                         planned)
         print("%-34s %-12s %4.0f s (build %.0f s)  killed by: %s" % (
             fault["name"], row["status"], row["time"], row.get("build", 0),
             ", ".join(row["killed"]) or "NOTHING"), flush=True)
@@ -530,8 +604,17 @@ def main():
     total = time.time() - start
     if args.report:
         write_report(args.report, args.level, args.platform, commit, rows,
-                     total, command, overlays, len(faults))
+                     total, command, overlays, planned)
         print("report: " + args.report)
+    if args.record:
+        for r in rows:
+            if r["killed"] and r["status"] == "ran":
+                killed[r["name"]] = {"fingerprint": prints[r["name"]],
+                                     "commit": commit,
+                                     "killedBy": r["killed"]}
+        known = {f["name"] for f in load_faults(args.faults, "core", None)}
+        write_killed({k: v for k, v in killed.items() if k in known})
+        print("recorded: " + KILLED)
     if not args.keep and not args.work:
         shutil.rmtree(work, ignore_errors=True)
 
