@@ -84,9 +84,9 @@ def base_name(function):
     return name.split()[-1] if name.split() else name
 
 
-def callgrind_profile(path, entry):
+def callgrind_profile(path, entry, member="::correct("):
     """Parse a callgrind output file: the total instructions, and for the
-    functions whose name contains entry, the calls and the inclusive
+    functions whose name contains entry and member, the calls and the inclusive
     instructions split into PARTS (self costs by the file they come from,
     callees by PARTS applied to the callee's own breakdown). Returns (total,
     calls, {part: instructions}, {callee: instructions})"""
@@ -165,7 +165,7 @@ def callgrind_profile(path, entry):
         return out
 
     entries = [f for f in set(self_cost) | set(edges)
-               if f and entry in f and "::correct(" in f]
+               if f and entry in f and member in f]
     calls = sum(edge_calls[caller][f] for caller in edge_calls
                 for f in entries)
     parts = collections.Counter()
