@@ -161,12 +161,6 @@ def main():
                 rows.append(row)
                 print(row, flush=True)
 
-    keys = []
-    for r in rows:
-        keys += [k for k in r if k not in keys]
-    for r in rows:
-        for k in keys:
-            r.setdefault(k, "")
     stem = os.path.join(bc.ROOT, "benchmarks", "results",
                         "collision-cost.%s" % args.platform)
     bc.write_csv(stem + ".csv", rows)

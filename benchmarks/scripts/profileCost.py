@@ -231,12 +231,6 @@ def main():
             print(row, flush=True)
             os.remove(out)
 
-    keys = []
-    for r in rows:
-        keys += [k for k in r if k not in keys]
-    for r in rows:
-        for k in keys:
-            r.setdefault(k, "")
     stem = os.path.join(bc.ROOT, "benchmarks", "results",
                         "%s.%s" % (args.output, args.platform))
     bc.write_csv(stem + ".csv", rows)

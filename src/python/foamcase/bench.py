@@ -37,11 +37,15 @@ def portable_text(text):
 
 
 def write_csv(name, rows):
-    """rows (dicts with the same keys) to benchmarks/results/name (or to name
-    if it is an absolute path)"""
+    """rows (dicts) to benchmarks/results/name (or to name if it is an
+    absolute path); the columns are every key of any row, in the order they
+    first appear, empty where a row has none"""
     import csv
+    keys = []
+    for r in rows:
+        keys += [k for k in r if k not in keys]
     with open(os.path.join(RESULTS, name), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w = csv.DictWriter(f, fieldnames=keys, restval="")
         w.writeheader()
         w.writerows(rows)
 

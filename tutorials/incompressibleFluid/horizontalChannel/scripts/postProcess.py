@@ -109,6 +109,19 @@ RANGE_LINE = re.compile(r"^\s*(rotationalLift|fluidTorque) \((\w+)\): (\d+) of (
 TIME_LINE = re.compile(r"^Time = (%s)s?$" % fc.NUMBER)
 
 
+def log_lines(case):
+    """(time, line) of every line of the case's log.foamRun after its first
+    time step's "Time = " line (time: that of the step the line is in)"""
+    time = None
+    with open(os.path.join(case, "log.foamRun")) as f:
+        for line in f:
+            m = TIME_LINE.match(line)
+            if m:
+                time = float(m.group(1))
+            elif time is not None:
+                yield time, line
+
+
 def in_run_range_counts(case, t0, t1):
     """How many of the spin models' evaluations the run itself counted
     outside their correlation's range (the log's line at the end of every
@@ -116,18 +129,12 @@ def in_run_range_counts(case, t0, t1):
     {liftEvaluations, liftOutside, torqueEvaluations, torqueOutside}; a
     model that is not selected has no entry."""
     out = {}
-    time = -np.inf
-    with open(os.path.join(case, "log.foamRun")) as f:
-        for line in f:
-            m = TIME_LINE.match(line)
-            if m:
-                time = float(m.group(1))
-                continue
-            m = RANGE_LINE.match(line)
-            if m and t0 + EPS_TIME < time <= t1 + EPS_TIME:
-                key = "lift" if m.group(1) == "rotationalLift" else "torque"
-                out[key + "Outside"] = out.get(key + "Outside", 0) + int(m.group(3))
-                out[key + "Evaluations"] = out.get(key + "Evaluations", 0) + int(m.group(4))
+    for time, line in log_lines(case):
+        m = RANGE_LINE.match(line)
+        if m and t0 + EPS_TIME < time <= t1 + EPS_TIME:
+            key = "lift" if m.group(1) == "rotationalLift" else "torque"
+            out[key + "Outside"] = out.get(key + "Outside", 0) + int(m.group(3))
+            out[key + "Evaluations"] = out.get(key + "Evaluations", 0) + int(m.group(4))
     return out
 
 
@@ -247,16 +254,10 @@ def step_series(case, name):
     value written in a step)."""
     pattern = STEP_SERIES[name]
     values = {}
-    time = None
-    with open(os.path.join(case, "log.foamRun")) as f:
-        for line in f:
-            m = TIME_LINE.match(line)
-            if m:
-                time = float(m.group(1))
-                continue
-            m = pattern.match(line)
-            if m and time is not None:
-                values[time] = float(m.group(1))
+    for time, line in log_lines(case):
+        m = pattern.match(line)
+        if m:
+            values[time] = float(m.group(1))
     t = np.array(sorted(values))
     return t, np.array([values[x] for x in t])
 
