@@ -41,9 +41,7 @@ import os
 import re
 import shutil
 import statistics
-import subprocess
 import sys
-import time
 
 from foamcase import bench as bc
 import foamcase as fc
@@ -101,9 +99,7 @@ def main():
     platform = fc.Platform(args.platform)
     work = os.path.join(os.path.abspath(args.work), args.platform)
     os.makedirs(work, exist_ok=True)
-    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"],
-                            capture_output=True, text=True,
-                            cwd=bc.ROOT).stdout.strip()
+    commit = bc.head_commit()
     rows = []
 
     # callgrind: each size at two lengths
@@ -150,7 +146,7 @@ def main():
                 log = "log.%s.%d" % (model, rnd)
                 case.run([case.solver], log, timeout=7200)
                 seconds, steps = step_cpu(fc.read_text(case.file(log)))
-                load = float(open("/proc/loadavg").read().split()[0])
+                load = bc.load_average()
                 loads.append(load)
                 cpu.setdefault((parcels, model), []).append(
                     seconds/(steps*parcels))
@@ -174,10 +170,7 @@ def main():
                                 args.rounds_steps, args.rounds))
     lines = [
         "# The inter-particle collision model's cost (%s)" % args.platform, "",
-        "Commit %s, %s UTC, %d cores shared with other jobs (1-min load "
-        "average %.1f-%.1f during the rounds). Command: `%s`." % (
-            commit, time.strftime("%Y-%m-%d %H:%M", time.gmtime()),
-            os.cpu_count(), min(loads), max(loads), command), "",
+        bc.provenance_line(commit, loads, command), "",
         "The granular-gas box of `tests/openfoam/testSommerfeldCollision.py` "
         "(2 x 2 x 2 cells, no carrier forces, about 20 collisions per "
         "particle and second, a step probability of about 0.05), "

@@ -23,12 +23,12 @@ import argparse
 import os
 import re
 import statistics
-import subprocess
 import time
 
 import numpy as np
 
 import foamcase as fc
+from foamcase import bench as bc
 from foamcase import lagrangianCase as lc
 
 CONDITIONS = {
@@ -59,9 +59,7 @@ def main():
     p.add_argument("--callgrind-steps", type=int, nargs=2)
     p.add_argument("--callgrind-particles", type=int, default=2000)
     args = p.parse_args()
-    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"],
-                            capture_output=True, text=True,
-                            cwd=os.path.dirname(__file__)).stdout.strip()
+    commit = bc.head_commit()
     instr = {}
     if args.callgrind_steps:
         for steps in args.callgrind_steps:

@@ -41,8 +41,6 @@ import argparse
 import os
 import shutil
 import statistics
-import subprocess
-import time
 
 from foamcase import bench as bc
 import foamcase as fc
@@ -112,9 +110,7 @@ def main():
     oc.MODEL_FILE.update(table="table")
     work = os.path.join(os.path.abspath(args.work), args.platform)
     os.makedirs(work, exist_ok=True)
-    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"],
-                            capture_output=True, text=True,
-                            cwd=bc.ROOT).stdout.strip()
+    commit = bc.head_commit()
     rows = []
 
     # callgrind: the same case at two lengths
@@ -161,7 +157,7 @@ def main():
     for rnd in range(args.rounds):
         for variant in (VARIANTS if rnd % 2 == 0 else VARIANTS[::-1]):
             r = run(runner, case, variant, "log.%s.%d" % (variant, rnd))
-            load = float(open("/proc/loadavg").read().split()[0])
+            load = bc.load_average()
             loads.append(load)
             cpu[variant].append(r["step_cpu"])
             row = dict(platform=args.platform, commit=commit, kind="round",
@@ -187,10 +183,7 @@ def main():
     lines = [
         "# e and muD as tables of the impact angle: cost in the wall box "
         "(%s)" % args.platform, "",
-        "Commit %s, %s UTC, %d cores shared with other jobs (1-min load "
-        "average %.1f-%.1f during the rounds). Command: `%s`." % (
-            commit, time.strftime("%Y-%m-%d %H:%M", time.gmtime()),
-            os.cpu_count(), min(loads), max(loads), command), "",
+        bc.provenance_line(commit, loads, command), "",
         "`table`: e and muD as Function1 tables of the facet impact angle "
         "(five rows, values those of the constants, so the same paths and "
         "hits as `rough`).", "",

@@ -9,6 +9,7 @@ import platform
 import re
 import shutil
 import subprocess
+import time
 
 from .tables import read_csv
 
@@ -96,6 +97,25 @@ def machine():
         info["git commit"] += " (src/roughWallCore modified)"
     info["date"] = datetime.datetime.now().isoformat(timespec="seconds")
     return info
+
+
+def head_commit():
+    """The short commit of the checkout's HEAD"""
+    return _run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"]).strip()
+
+
+def load_average():
+    """The 1-minute load average"""
+    return float(open("/proc/loadavg").read().split()[0])
+
+
+def provenance_line(commit, loads, command):
+    """A side-by-side result's line of what it was measured at: commit,
+    date, cores, the load during its rounds, the command"""
+    return ("Commit %s, %s UTC, %d cores shared with other jobs (1-min load "
+            "average %.1f-%.1f during the rounds). Command: `%s`." % (
+                commit, time.strftime("%Y-%m-%d %H:%M", time.gmtime()),
+                os.cpu_count(), min(loads), max(loads), command))
 
 
 def machine_markdown(info):
