@@ -274,9 +274,9 @@ def block_mean(t, v, t0, t1):
     return float(v.mean()), float(means.std(ddof=1)/np.sqrt(N_BLOCKS))
 
 
-def loading_statistics(case, info, summary, t0, t1):
+def loading_statistics(case, info, summary, t0, t1, ubulk):
     """The loading variants' statistics over the window (see the module's
-    docstring)."""
+    docstring); ubulk the air's bulk velocity"""
     out = {}
     mesh = tc.read_mesh(case)
     volume = float(np.prod(mesh.hi - mesh.lo))
@@ -285,7 +285,6 @@ def loading_statistics(case, info, summary, t0, t1):
     cloud = fc.read_text(os.path.join(case, "constant", "cloudProperties"))
     rhoP = float(re.search(r"^\s*rho0\s+([^;]+);", cloud, re.M).group(1))
     mass = rhoP*np.pi/6*info["diameter"]**3
-    ubulk = carrier_statistics(info)["Ubulk"]
     # The beads the air carries: none one-way (loading0)
     coupled = info.get("twoWayCoupling", "false") == "true"
     beads = info["nParcels"]*info["nParticle"] if coupled else 0
@@ -540,7 +539,7 @@ def analyse(case):
     summary["spinRatios"] = ratios
     summary["spinHistograms"] = hist
     if is_loading(info):
-        summary.update(loading_statistics(case, info, summary, t0, t1))
+        summary.update(loading_statistics(case, info, summary, t0, t1, ubulk))
     return info, prof, summary, history
 
 
