@@ -110,7 +110,7 @@ def flat_wall_groups(n, rng, two_d=False):
 
 
 def run(case, n_procs=1):
-    fc.run(case, ["blockMesh"], "log.blockMesh")
+    fc.block_mesh(case)
     if n_procs > 1:
         fc.run(case, ["decomposePar"], "log.decomposePar")
         fc.run(case, fc.mpirun(n_procs, ["foamRun", "-parallel"]),
@@ -488,7 +488,7 @@ def test_bad_input(args, work):
     for name, cond, patterns in cases:
         case = lc.make_case(os.path.join(work, name), groups, ESCAPE,
                             lowerWall=cond, end_time=0.002)
-        fc.run(case, ["blockMesh"], "log.blockMesh")
+        fc.block_mesh(case)
         run_expect_error(case, name, patterns)
     # A cloud without d: OpenFOAM-14's tracer cloud (no size, no mass; no
     # 0/Lagrangian/cloud/d). The condition is evaluated at the first step
@@ -508,7 +508,7 @@ def test_bad_input(args, work):
                             end_time=0.002, write_d=False)
         fc.replace_in_file(os.path.join(case, "system", "controlDict"),
                            "kinematicParticleCloud", "tracerCloud")
-        fc.run(case, ["blockMesh"], "log.blockMesh")
+        fc.block_mesh(case)
         if fails:
             # run_expect_error runs foamRun and checks its message; a
             # release without the tracer cloud stops before the condition

@@ -57,7 +57,7 @@ from .lagrangian import (processor_roots, time_dirs, cloud_dirs, read_cloud,
                          read_positions, cloud_parts)
 from .logs import (statistics_path, read_statistics, column, read_steps,
                    system_escapes, parcel_counts, final_parcels)
-from .running import run, mpirun
+from .running import run, mpirun, block_mesh
 from .tables import read_csv
 from .cases import Injector, FoamCase
 

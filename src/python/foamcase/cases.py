@@ -24,7 +24,7 @@ from .errors import FoamError
 from .lagrangian import cloud_dirs, cloud_parts, read_cloud
 from .logs import read_statistics, read_steps, statistics_path
 from .platforms import SPIN
-from .running import mpirun, run
+from .running import block_mesh, mpirun, run
 
 class Injector:
     """A manualInjection: one parcel (of nParticle particles, default 1) at
@@ -220,7 +220,7 @@ boundaryField
 
     def mesh(self, nprocs=1):
         """blockMesh, and decomposePar into nprocs x-slabs if nprocs > 1."""
-        self.run(["blockMesh"], "log.blockMesh")
+        block_mesh(self.path)
         self.nprocs = nprocs
         if nprocs > 1:
             self.set_subdomains(nprocs)

@@ -17,6 +17,7 @@ v1912 (ESI), in one place, and where the dynamic loader finds a library.
 SPDX-License-Identifier: GPL-3.0-or-later
 """
 
+import hashlib
 import os
 import re
 import subprocess
@@ -155,9 +156,31 @@ def find_library(name):
 
 
 def ldd(path):
-    """{library name: resolved path or 'not found'} of a binary."""
-    out = subprocess.run(["ldd", path], stdout=subprocess.PIPE,
-                         stderr=subprocess.STDOUT, text=True).stdout
+    """{library name: resolved path or 'not found'} of a binary.
+
+    Under ctest ($ROUGHWALL_TEST_CACHE) ldd's output is kept there, keyed by
+    the binary's path, size and time and the loader's search path: each test
+    checks its libraries, and a binary rebuilt or a search path changed gives
+    a new key."""
+    cache = os.environ.get("ROUGHWALL_TEST_CACHE")
+    out = None
+    if cache:
+        stat = os.stat(path)
+        key = hashlib.sha1(repr((os.path.abspath(path), stat.st_size,
+                                 stat.st_mtime_ns,
+                                 library_search_path())).encode())
+        saved = os.path.join(cache, "ldd", key.hexdigest())
+        if os.path.exists(saved):
+            with open(saved) as f:
+                out = f.read()
+    if out is None:
+        out = subprocess.run(["ldd", path], stdout=subprocess.PIPE,
+                             stderr=subprocess.STDOUT, text=True).stdout
+        if cache:
+            os.makedirs(os.path.dirname(saved), exist_ok=True)
+            with open("%s.%d" % (saved, os.getpid()), "w") as f:
+                f.write(out)
+            os.replace("%s.%d" % (saved, os.getpid()), saved)
     deps = {}
     for line in out.splitlines():
         m = re.match(r"\s*(\S+)\s+=>\s+(\S+(?: found)?)", line)

@@ -4,7 +4,9 @@ timed; mpirun command lines for a shared machine.
 SPDX-License-Identifier: GPL-3.0-or-later
 """
 
+import hashlib
 import os
+import shutil
 import subprocess
 import time
 
@@ -31,6 +33,39 @@ def run(case, args, log, check_rc=True, timeout=900):
         raise CommandFailed("%s failed (rc %s), see %s"
                           % (args[0], rc, os.path.join(case, log)))
     return rc, elapsed
+
+
+def block_mesh(case, log="log.blockMesh"):
+    """blockMesh in case.  Under ctest ($ROUGHWALL_TEST_CACHE) the mesh is
+    made once per blockMeshDict and OpenFOAM installation and copied from
+    there afterwards (the tests make the same few meshes a few hundred
+    times); the log then says where it was copied from."""
+    cache = os.environ.get("ROUGHWALL_TEST_CACHE")
+    if not cache:
+        return run(case, ["blockMesh"], log)
+    with open(os.path.join(case, "system", "blockMeshDict"), "rb") as f:
+        key = hashlib.sha1(f.read() + os.environ.get(
+            "WM_PROJECT_DIR", "").encode()).hexdigest()
+    saved = os.path.join(cache, "blockMesh", key)
+    mesh = os.path.join(case, "constant", "polyMesh")
+    if not os.path.isdir(saved):
+        result = run(case, ["blockMesh"], log)
+        shutil.copytree(mesh, "%s.%d" % (saved, os.getpid()))
+        try:
+            os.rename("%s.%d" % (saved, os.getpid()), saved)
+        except OSError:     # made at the same time by another test
+            shutil.rmtree("%s.%d" % (saved, os.getpid()))
+        return result
+    start = time.time()
+    if os.path.exists(mesh):
+        shutil.rmtree(mesh)
+    shutil.copytree(saved, mesh)
+    with open(os.path.join(case, log), "w") as f:
+        f.write("blockMesh: constant/polyMesh copied from %s, made by "
+                "blockMesh from the same blockMeshDict\n" % saved)
+    print("ran   blockMesh (%s): copied from the test cache" % log,
+          flush=True)
+    return 0, time.time() - start
 
 
 def mpirun(nprocs, args):

@@ -125,7 +125,7 @@ def rotating_carrier(case, omega_f):
 def mesh(case, nprocs, before_decompose=None):
     """blockMesh, then before_decompose(case), then decomposePar if
     nprocs > 1."""
-    case.run(["blockMesh"], "log.blockMesh")
+    fc.block_mesh(case.path)
     if before_decompose:
         before_decompose(case)
     case.nprocs = nprocs

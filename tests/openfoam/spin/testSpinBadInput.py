@@ -74,7 +74,7 @@ def run(args, platform, name, body, kind="colliding", with_libs=True):
         fc.write_text(path, "\n".join(
             line for line in fc.read_text(path).splitlines()
             if not line.startswith("libs")) + "\n")
-    case.run(["blockMesh"], "log.blockMesh")
+    fc.block_mesh(case.path)
     rc, _ = case.solve("log.solver", check_rc=False)
     return rc, case.log("log.solver")
 
