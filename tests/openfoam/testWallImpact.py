@@ -15,7 +15,10 @@ Checks:
     sum(v''_t)/sum|v'_t| with their four sums, and the energy loss equal
     those computed from the parcels (to 1e-8 relative, 1e-6 for the energy:
     the file has 12 digits);
-  - spin: written for the colliding cloud, absent for the kinematic cloud.
+  - spin: written for the colliding cloud, absent for the kinematic cloud;
+  - --repeat: the meshed (and decomposed) case run once more writes the
+    same parcels and statistics file, digit for digit (reproducible for a
+    given decomposition).
 
 With --wallVelocity u the wall moves at (u, 0, 0): the incidence angles
 relative to the wall change (u = -0.5: 6.7, 20.1 and 40.9 deg) and k_n, k_t,
@@ -26,7 +29,7 @@ Usage: testWallImpact.py --platform openfoam13|openfoam1912
            [--roughness "8" | --roughness "((100e-6 8) (120e-6 4))"]
            [--roughnessParameters "Rq 2.35e-6; RSm 105e-6; estimate closedForm;"]
            [--profile]
-           [--parcels N] [--np N] [--wallVelocity u] [--work DIR]
+           [--parcels N] [--np N] [--wallVelocity u] [--repeat] [--work DIR]
 --roughnessParameters: the wall given by its profile parameters
 (roughness { ... } instead of roughnessAngle); the reference of each size
 class is that of the constant Delta = atan(2 pi Rq / max(RSm, d)) of its
@@ -56,6 +59,7 @@ import argparse
 import math
 import os
 import re
+import shutil
 
 import numpy as np
 
@@ -80,6 +84,9 @@ def parse_args():
     p.add_argument("--np", type=int, default=1)
     p.add_argument("--wallVelocity", type=float, default=0.0,
                    help="lowerWall moves at (wallVelocity 0 0)")
+    p.add_argument("--repeat", action="store_true",
+                   help="run the meshed (and decomposed) case a second time "
+                        "and require the same parcels and statistics file")
     return p.parse_args()
 
 
@@ -129,6 +136,11 @@ def test():
     if args.wallVelocity:
         t.set_wall_velocity(case, args.wallVelocity)
     case.mesh(args.np)
+    if args.repeat:
+        repeat = os.path.join(args.work, "repeat")
+        if os.path.exists(repeat):
+            shutil.rmtree(repeat)
+        shutil.copytree(case.path, repeat)
     case.solve()
     # The compile-time choice of spin, as the log states it (fc.SPIN: the
     # test's own table of the clouds whose parcels carry angularMomentum)
@@ -256,6 +268,30 @@ def test():
             and 1 <= per_hit < 1.5,
             "statistics file: facetPerHit %.6f = (noSlip + sliding)/hits"
             % per_hit)
+
+    if args.repeat:
+        check_repeat(case, repeat)
+
+
+def check_repeat(case, repeat):
+    """The same case run again on the same decomposition gives the same
+    parcels and statistics file, digit for digit: the draws depend on the
+    processor, the parcels and their order, which a repeat keeps (oracle:
+    the first run's files)."""
+    fc.run(repeat, case.run_args(), "log.solver")
+    files = [os.path.relpath(os.path.join(root, name), case.path)
+             for root, _, names in os.walk(case.path) for name in names
+             if os.sep + END_TIME + os.sep in os.path.join(root, name) + os.sep
+             and os.sep + "lagrangian" + os.sep in root + os.sep]
+    files.append(os.path.relpath(case.statistics_file("0"), case.path))
+    differ = [f for f in files
+              if fc.read_text(os.path.join(case.path, f))
+              != fc.read_text(os.path.join(repeat, f))]
+    t.check(len(files) > 4 and not differ,
+            "the repeat on %d processor(s) writes the same %d files "
+            "(parcels at t = %s, statistics)%s"
+            % (case.nprocs, len(files), END_TIME,
+               ": these differ: %s" % differ if differ else ""))
 
 
 if __name__ == "__main__":

@@ -226,13 +226,18 @@ boundaryField
             self.set_subdomains(nprocs)
             self.run(["decomposePar"], "log.decomposePar")
 
-    def solve(self, log="log.solver", check_rc=True, timeout=900):
-        """Run the platform's solver (parallel after mesh(n > 1)).
-        Returns (rc, wall-clock seconds)."""
+    def run_args(self):
+        """The command line of the platform's solver (parallel after
+        mesh(n > 1))."""
         args = [self.solver]
         if self.nprocs > 1:
             args = mpirun(self.nprocs, args + ["-parallel"])
-        return self.run(args, log, check_rc, timeout)
+        return args
+
+    def solve(self, log="log.solver", check_rc=True, timeout=900):
+        """Run the platform's solver (parallel after mesh(n > 1)).
+        Returns (rc, wall-clock seconds)."""
+        return self.run(self.run_args(), log, check_rc, timeout)
 
     def log(self, log="log.solver"):
         return read_text(self.file(log))

@@ -173,6 +173,36 @@ def sd_and_se(x):
         math.sqrt(max(m4 - m2*m2, 0)/n)/(2*math.sqrt(m2))
 
 
+def source_hash(path):
+    """SHA-1 of a source file's text, for the keys of cached()."""
+    return hashlib.sha1(read_text(path).encode()).hexdigest()
+
+
+def cached(name, args, compute):
+    """compute(), a JSON value, kept in $ROUGHWALL_ORACLE_CACHE (set by
+    ctest) under name and args (a JSON dict; with the oracle's source hash
+    added) and reused by the other tests and platforms: for oracle results
+    that are deterministic and take seconds to compute.  Tuples come back
+    as lists."""
+    cache = os.environ.get("ROUGHWALL_ORACLE_CACHE")
+    args = dict(args, oracle=source_hash(roughWallOracle.__file__))
+    key = hashlib.sha1(json.dumps([name, args], sort_keys=True).encode())
+    path = os.path.join(cache, "%s.%s.json" % (name, key.hexdigest())) \
+        if cache else None
+    if path and os.path.exists(path):
+        print("oracle: %s (cached)" % name, flush=True)
+        return json.loads(read_text(path))["value"]
+    start = time.time()
+    value = compute()
+    print("oracle: %s (%.1f s)" % (name, time.time() - start), flush=True)
+    if path:
+        os.makedirs(cache, exist_ok=True)
+        tmp = "%s.%d" % (path, os.getpid())
+        write_text(tmp, json.dumps({"args": args, "value": value}))
+        os.replace(tmp, path)
+    return value
+
+
 def reference(spin, delta_deg, alphas, samples=1000000, seed=1, e=0.8,
               mu0=0.4, muD=0.4, lateral_tilt=False):
     """Reference rebound statistics {alpha: row} (mean_kn, se_mean_kn,
