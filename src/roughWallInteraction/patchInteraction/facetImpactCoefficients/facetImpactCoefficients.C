@@ -117,7 +117,7 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
         }
 
         tmp<scalarField> x;
-        if (roughWallCompat::isConstant(f()))
+        if (f->type() == "constant")
         {
             const scalar c = constants_.*members[i] = f->value(0);
             f.clear();
