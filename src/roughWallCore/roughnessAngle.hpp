@@ -13,16 +13,21 @@
 //                equation (1), profileRoughness.hpp
 //   envelope     roughness { profile "<file>"; } or the profile parameters:
 //                the rolling-sphere envelope, tabulated (envelopeAngleTable.hpp)
-// One object per patch, asked once per wall hit. The checks of a table's rows
-// are here as well: the adapter only reads the numbers and words the message.
+// One object per patch, asked once per wall hit. The checks and the
+// construction of every form are here as well (roughnessOfRows,
+// roughnessOfTrace, roughnessOfParameters, which throw BadRoughness naming
+// the keyword, what is allowed and what is wrong): the adapter only reads
+// the numbers and words the message.
 #pragma once
 
 #include "envelopeAngleTable.hpp"
+#include "profileFile.hpp"
 #include "profileRoughness.hpp"
 #include "rollingSphereEnvelope.hpp"
 #include "limitsAndUnits.hpp"
 
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -204,6 +209,163 @@ inline SyntheticProfileSettings gaussianProfileOf(const ProfileRoughness& p)
     s.Rq = p.rmsHeight();
     s.RSm = p.RSm;
     return s;
+}
+
+//- A bad roughness input: the keyword, what is allowed there and what is
+//  wrong (what(); empty if only the value given is)
+struct BadRoughness : std::invalid_argument
+{
+    std::string keyword, allowed;
+
+    BadRoughness(std::string k, std::string a, const std::string& wrong = "")
+    :
+        std::invalid_argument(wrong), keyword(std::move(k)),
+        allowed(std::move(a))
+    {}
+};
+
+//- A number as text, as the messages write it
+inline std::string numberText(const double x)
+{
+    std::ostringstream os;
+    os << x;
+    return os.str();
+}
+
+//- What roughnessAngle must be, for the messages
+inline std::string roughnessAngleAllowed()
+{
+    const std::string max = numberText(limits::maxRoughnessAngleDeg);
+    return
+        "a number in [0, " + max + "] or a table ((d1 Delta1) (d2 Delta2) "
+        "...) with Delta in [0, " + max + "] and d >= 0 strictly increasing";
+}
+
+//- roughnessAngle: a constant (one row, d = 0) or a table of rows (d [m],
+//  Delta [deg]); throws BadRoughness naming the first bad row of a table
+inline RoughnessAngle roughnessOfRows
+(
+    const std::vector<RoughnessAngle::Row>& rows
+)
+{
+    const long bad = RoughnessAngle::firstBadRow(rows);
+    if (bad >= 0)
+    {
+        throw BadRoughness
+        (
+            "roughnessAngle", roughnessAngleAllowed(),
+            rows.size() > 1 ? "row " + std::to_string(bad + 1) : ""
+        );
+    }
+    return RoughnessAngle::table(rows);
+}
+
+//- Delta(d_p) of the rolling-sphere envelope of the profile that source
+//  describes, tabulated on [dMin, dMax] as EnvelopeAngleTable's; keyword
+//  names the input in the errors (a profile too short, Delta above the
+//  model's limit)
+inline RoughnessAngle roughnessOfProfile
+(
+    const SampledProfile& profile,
+    const std::string& source,
+    const double dMin,
+    const double dMax,
+    const std::string& keyword
+)
+{
+    EnvelopeAngleTable envelope;
+    try
+    {
+        envelope = EnvelopeAngleTable(profile, dMin, dMax);
+    }
+    catch (const std::exception& err)
+    {
+        throw BadRoughness
+        (
+            keyword, "a profile longer than twice its largest point spacing",
+            source + ": " + err.what()
+        );
+    }
+    const double maxFound = limits::radToDeg(envelope.maxAngle());
+    if (maxFound > limits::maxRoughnessAngleDeg)
+    {
+        throw BadRoughness
+        (
+            keyword,
+            "a profile whose Delta(d_p) is at most "
+          + numberText(limits::maxRoughnessAngleDeg) + " deg (the model's "
+            "limit)",
+            source + ": Delta up to " + numberText(maxFound) + " deg"
+        );
+    }
+    return RoughnessAngle::envelope(envelope, source);
+}
+
+//- What a profile file must be, for the messages
+inline std::string profileFileAllowed()
+{
+    return
+        "a readable trace of at least " + std::to_string(minProfilePoints)
+      + " points, lines 'x z' with finite numbers, x strictly increasing "
+        "(docs/roughWallInteraction.md)";
+}
+
+//- roughness { profile "<file>"; }: Delta(d_p) of the envelope of the
+//  levelled trace in the file (profileFile.hpp's format)
+inline RoughnessAngle roughnessOfTrace(const std::string& file)
+{
+    SampledProfile trace;
+    try
+    {
+        trace = levelledProfile(readProfileFile(file));
+    }
+    catch (const std::exception& err)
+    {
+        throw BadRoughness("profile", profileFileAllowed(), err.what());
+    }
+    return roughnessOfProfile
+    (
+        trace,
+        "profile " + file + " (" + std::to_string(trace.x.size())
+      + " points, levelled)",
+        0, 0, "profile"
+    );
+}
+
+//- roughness { Ra ...; Rq ...; Rz ...; RSm ...; estimate ...; }: Delta(d_p)
+//  of the parameters (given*: whether each height was given), the envelope
+//  of their synthetic Gaussian profile, tabulated from RSm/10 (where Delta
+//  is at its small-sphere limit, to 3e-4 deg) to 100 RSm (where it has
+//  fallen to a tenth of it), or equation (1) if closedForm
+inline RoughnessAngle roughnessOfParameters
+(
+    const ProfileRoughness& p,
+    const bool givenRa,
+    const bool givenRq,
+    const bool givenRz,
+    const bool closedForm
+)
+{
+    const ProfileRoughnessError error =
+        checkProfileRoughness(p, givenRa, givenRq, givenRz);
+    if (!error.keyword.empty())
+    {
+        throw BadRoughness(error.keyword, error.allowed);
+    }
+    if (closedForm)
+    {
+        return RoughnessAngle::closedForm(p);
+    }
+    const SyntheticProfileSettings s = gaussianProfileOf(p);
+    const SampledProfile profile = syntheticGaussianProfile(s);
+    return roughnessOfProfile
+    (
+        profile,
+        "synthetic Gaussian profile, Rq = " + numberText(s.Rq) + " m, RSm = "
+      + numberText(s.RSm) + " m (" + std::to_string(profile.x.size())
+      + " points, seed " + std::to_string(s.seed) + ")",
+        s.RSm/10, 100*s.RSm, givenRq ? "Rq" : givenRa ? "Ra" : "Rz"
+    );
 }
 
 } // End namespace roughWall

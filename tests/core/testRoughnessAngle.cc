@@ -204,3 +204,44 @@ TEST(RoughnessAngle, WallAtTheSlopeLimitGivesAProfileWithinIt)
         }
     }
 }
+
+
+// The constructions the adapter hands its input to: a bad input throws
+// BadRoughness naming the keyword and, for a table, the row (1-based) that
+// breaks the rules stated above; good input gives the form asked for
+TEST(RoughnessAngle, ConstructionsNameTheKeywordAndRowOfABadInput)
+{
+    const auto badRows = [](const std::vector<RoughnessAngle::Row>& rows)
+    {
+        try
+        {
+            roughnessOfRows(rows);
+        }
+        catch (const BadRoughness& err)
+        {
+            return err.keyword + ":" + err.what();
+        }
+        return std::string("accepted");
+    };
+    EXPECT_EQ(badRows({{0, 50}}), "roughnessAngle:");
+    EXPECT_EQ(badRows({{1e-4, 8}, {1e-4, 5}}), "roughnessAngle:row 2");
+    EXPECT_EQ(badRows({{1e-4, 8}, {2e-4, 5}, {3e-4, -1}}),
+              "roughnessAngle:row 3");
+    EXPECT_EQ(badRows({{0, 8}}), "accepted");
+    EXPECT_EQ(roughnessOfRows({{0, 8}}).form(), RoughnessAngle::Form::constant);
+
+    ProfileRoughness p;
+    p.Ra = 1e-6;
+    try
+    {
+        roughnessOfParameters(p, true, false, false, true);
+        ADD_FAILURE() << "no RSm accepted";
+    }
+    catch (const BadRoughness& err)
+    {
+        EXPECT_EQ(err.keyword, "RSm");
+    }
+    p.RSm = 50e-6;
+    EXPECT_EQ(roughnessOfParameters(p, true, false, false, true).form(),
+              RoughnessAngle::Form::closedForm);
+}

@@ -37,9 +37,9 @@ With --badInput: bad functions stop the run (non-zero exit, no crash):
     out of order (OpenFOAM's "out-of-order value", which names no keyword):
     FOAM FATAL IO ERROR naming the keyword, the patch entry, the token
     left over or OpenFOAM's message, and the allowed forms;
-  - e the Function1 constant 1.5: checked at start-up like a table (before
-    2026-11-27 only at the first facet collision): FOAM FATAL IO ERROR
-    naming the patch entry, "e = 1.5" and [0, 1];
+  - e the Function1 constant 1.5: kept as the number 1.5 and checked at
+    start-up as every constant is: FOAM FATAL IO ERROR naming the keyword,
+    the patch entry, 'constant 1.5' and [0, 1];
   - muD a polynomial 0.1 + 0.01 beta with mu0 0.4 (above mu0 beyond 30 deg,
     not checkable at start-up): FOAM FATAL ERROR at the first such facet
     collision naming the patch, "muD = ", "at angle = " and "[0, mu0]".
@@ -142,12 +142,12 @@ def bad_input(platform, args):
          ["FOAM FATAL IO ERROR", "'muD'", "'0.5'", "a number in [0, 0.4]"]),
         ("a token after the e table", SETTINGS.replace(table, table + " 0.5"),
          ["FOAM FATAL IO ERROR", "keyword 'e'", "lowerWall|upperWall",
-          "tokens after the table: '0.5'", "a number in [0, 1], or an "
+          "left over", "'0.5'", "a number in [0, 1], or an "
           "OpenFOAM Function1"]),
         ("a number after the constant e", SETTINGS.replace(
             table, "constant 0.5 0.6"),
          ["FOAM FATAL IO ERROR", "keyword 'e'", "lowerWall|upperWall",
-          "tokens after the constant: '0.6'"]),
+          "left over", "'0.6'"]),
         ("e table out of order", SETTINGS.replace(table, foam_table(
             [(0, 0.9), (40, 0.8), (20, 0.85)])),
          ["FOAM FATAL IO ERROR", "keyword 'e'", "lowerWall|upperWall",
@@ -155,8 +155,8 @@ def bad_input(platform, args):
           "OpenFOAM Function1"]),
         ("e constant above 1", SETTINGS.replace(
             "e               %s;" % table, "e               constant 1.5;"),
-         ["FOAM FATAL IO ERROR", "lowerWall|upperWall", "e = 1.5",
-          "[0, 1]"]),
+         ["FOAM FATAL IO ERROR", "keyword 'e'", "lowerWall|upperWall",
+          "'constant 1.5'", "[0, 1]"]),
         ("muD polynomial above mu0", SETTINGS.replace(
             foam_table(MUD_TABLE), polynomial),
          ["FOAM FATAL ERROR", "lowerWall|upperWall", "muD = ",

@@ -172,59 +172,17 @@ Foam::string Foam::roughWallInput::entryText
 )
 {
     const entry* eptr = roughWallCompat::findLiteral(dict, keyword);
-
-    if (!eptr)
+    if (!eptr || eptr->isDict())
     {
-        return string();
+        return eptr ? "{ ... }" : "";
     }
-
-    return eptr->isDict() ? string("{ ... }") : tokensText(eptr->stream());
-}
-
-
-Foam::string Foam::roughWallInput::tokensText
-(
-    const ITstream& is,
-    const label first
-)
-{
     OStringStream os;
-    for (label toki = first; toki < is.size(); ++toki)
+    const ITstream& is = eptr->stream();
+    forAll(is, toki)
     {
-        os  << (toki > first ? " " : "") << is[toki];
+        os  << (toki ? " " : "") << is[toki];
     }
     return os.str();
-}
-
-
-Foam::label Foam::roughWallInput::readChoice
-(
-    const dictionary& dict,
-    const word& keyword,
-    const wordList& choices,
-    const char* meaning,
-    const std::optional<label>& deflt
-)
-{
-    if (deflt && !roughWallCompat::findLiteral(dict, keyword))
-    {
-        return *deflt;
-    }
-
-    string allowed = "one of";
-    for (const word& w : choices)
-    {
-        allowed += " " + w;
-    }
-
-    const word found = read<word>(dict, keyword, allowed, meaning);
-    const label i =
-        std::find(choices.begin(), choices.end(), found) - choices.begin();
-    if (i == choices.size())
-    {
-        fatalBadEntry(dict, keyword, allowed, meaning, "'" + found + "'");
-    }
-    return i;
 }
 
 

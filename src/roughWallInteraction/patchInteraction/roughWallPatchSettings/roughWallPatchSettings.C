@@ -33,9 +33,19 @@ License
 #include "roughnessAngleInput.H"
 #include "foamCompat.H"
 #include "limitsAndUnits.hpp"
+#include "Tuple2.H"
 #include "emptyPolyPatch.H"
 #include "wedgePolyPatch.H"
 #include "wallPolyPatch.H"
+
+// * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * //
+
+ROUGHWALL_NAMED_ENUM
+(
+    typeNames, Foam::roughWallPatchSettings::interactionType, 5,
+    "rough", "rebound", "stick", "escape", "none"
+);
+
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -44,7 +54,20 @@ namespace
 
 using namespace Foam;
 
-typedef roughWallPatchSettings settings;
+//- An entry of the patches list, read as OpenFOAM-14's LocalInteraction
+//- reads its own: a patch name or regular expression, then a dictionary
+struct patchEntry
+:
+    public Tuple2<wordRe, dictionary>
+{};
+
+Istream& operator>>(Istream& is, patchEntry& e)
+{
+    e.first() = wordRe(is);
+    dictionary d(is);
+    e.second().transfer(d);
+    return is;
+}
 
 
 //- The names as one space-separated string, for messages
@@ -62,112 +85,16 @@ string joined(const DynamicList<word>& names)
 const char* const patchesMeaning =
     "patch names or regular expressions and their interaction settings";
 
-} // End anonymous namespace
-
-
-// * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * * //
-
-// The keywords of each type: read in this order (muD's range is [0, mu0]),
-// checked against the dictionary, written in the summary.  The defaults and
-// the law of rebound are standardWallInteraction's.
-#define ROUGHWALL_READ(member, how)                                            \
-    [](settings& s, const dictionary& d) { s.member = how; }
-#define ROUGHWALL_WRITE(value)                                                 \
-    [](const settings& s, Ostream& os) { os << value; }
-
-const Foam::roughWallPatchSettings::typeEntry
-Foam::roughWallPatchSettings::types[5] =
+//- The keywords of type rough (after type): e, mu0, muD, eArgument are
+//- facetImpactCoefficients', roughnessAngle and roughness
+//- roughnessAngleInput's
+const wordList roughKeywords
 {
-    {"rough", {
-        {
-            // e, mu0, muD: numbers, or Function1s of the facet impact
-            "e",
-            [](settings& s, const dictionary& d)
-            {
-                s.coefficients_ =
-                    std::make_shared<const facetImpactCoefficients>
-                    (
-                        d, word(s.patchName_)
-                    );
-                s.rough_.material = s.coefficients_->constants();
-                s.impactDependent_ = s.coefficients_->dependsOnImpact();
-            },
-            ROUGHWALL_WRITE(s.coefficients_->description("e").c_str())
-        },
-        {
-            "mu0", nullptr,
-            ROUGHWALL_WRITE(s.coefficients_->description("mu0").c_str())
-        },
-        {
-            "muD", nullptr,
-            ROUGHWALL_WRITE(s.coefficients_->description("muD").c_str())
-        },
-        {"eArgument", nullptr, nullptr},     // read with e
-        {
-            "roughnessAngle",
-            ROUGHWALL_READ(roughness_, roughnessAngleInput::read(d)),
-            ROUGHWALL_WRITE(s.roughness_.describe().c_str())
-        },
-        {"roughness", nullptr, nullptr},    // read with roughnessAngle
-        {
-            "lateralTilt",
-            ROUGHWALL_READ(rough_.lateralTilt, roughWallInput::readSwitch
-            (
-                d, "lateralTilt",
-                "isotropic 3-D roughness: also tilt facets sideways by "
-                "N(0, Delta) (default: false; never applied in 2-D)",
-                false
-            )),
-            ROUGHWALL_WRITE((s.rough_.lateralTilt ? "true" : "false"))
-        },
-        {
-            "maxFacetCollisions",
-            ROUGHWALL_READ
-            (
-                rough_.maxFacetCollisions,
-                roughWallInput::readNumber<label>
-                (
-                    d, "maxFacetCollisions",
-                    {
-                        roughWall::limits::minMaxFacetCollisions,
-                        roughWall::limits::maxMaxFacetCollisions,
-                        "bound on facet collisions per wall hit before a "
-                        "smooth mean-wall rebound is applied (default: 10)"
-                    },
-                    roughWall::limits::defaultMaxFacetCollisions
-                )
-            ),
-            ROUGHWALL_WRITE(s.rough_.maxFacetCollisions)
-        }
-    }},
-    {"rebound", {
-        {
-            "e",
-            ROUGHWALL_READ(e_, roughWallInput::readNumber<scalar>(d, "e",
-                {0, 1, "normal restitution coefficient (default: 1)"}, 1)),
-            ROUGHWALL_WRITE(s.e_)
-        },
-        {
-            "mu",
-            ROUGHWALL_READ(mu_, roughWallInput::readNumber<scalar>(d, "mu",
-                {0, 1, "fraction of the tangential velocity lost (default: 0)"},
-                0)),
-            ROUGHWALL_WRITE(s.mu_)
-        }
-    }},
-    {"stick", {}},
-    {"escape", {}},
-    {"none", {}}
+    "e", "mu0", "muD", "eArgument", "roughnessAngle", "roughness",
+    "lateralTilt", "maxFacetCollisions"
 };
 
-#undef ROUGHWALL_READ
-#undef ROUGHWALL_WRITE
-
-static_assert
-(
-    roughWall::limits::defaultMaxFacetCollisions == 10,
-    "the meaning of maxFacetCollisions names its default"
-);
+} // End anonymous namespace
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -209,37 +136,61 @@ Foam::roughWallPatchSettings::roughWallPatchSettings()
 
 Foam::roughWallPatchSettings::roughWallPatchSettings
 (
-    const keyType& patchName,
+    const wordRe& patchName,
     const dictionary& dict
 )
 :
     roughWallPatchSettings()
 {
     patchName_ = patchName;
-
-    wordList typeNames;
-    for (const typeEntry& t : types)
-    {
-        typeNames.append(t.name);
-    }
-    const label typei = roughWallInput::readChoice
+    type_ = roughWallInput::readEnum
     (
         dict, "type", typeNames, "what happens to a parcel that hits the patch"
     );
-    type_ = interactionType(typei);
 
-    // Read every keyword of the type, then stop at any other keyword
-    for (const keyword& k : types[typei].keywords)
+    // The keywords of the type (the defaults and the law of rebound are
+    // standardWallInteraction's), then a stop at any other keyword
+    if (type_ == interactionType::rough)
     {
-        if (k.read)
-        {
-            k.read(*this, dict);
-        }
+        coefficients_ =
+            std::make_shared<const facetImpactCoefficients>(dict, patchName);
+        rough_.material = coefficients_->constants();
+        impactDependent_ = coefficients_->dependsOnImpact();
+        roughness_ = roughnessAngleInput::read(dict);
+        rough_.lateralTilt = roughWallInput::readSwitch
+        (
+            dict, "lateralTilt",
+            "isotropic 3-D roughness: also tilt facets sideways by "
+            "N(0, Delta) (default: false; never applied in 2-D)",
+            false
+        );
+        rough_.maxFacetCollisions = roughWallInput::readNumber<label>
+        (
+            dict, "maxFacetCollisions",
+            {
+                roughWall::limits::minMaxFacetCollisions,
+                roughWall::limits::maxMaxFacetCollisions,
+                "bound on facet collisions per wall hit before a smooth "
+                "mean-wall rebound is applied (default: 10)"
+            },
+            roughWall::limits::defaultMaxFacetCollisions
+        );
+    }
+    else if (type_ == interactionType::rebound)
+    {
+        e_ = roughWallInput::readNumber<scalar>
+        (
+            dict, "e", {0, 1, "normal restitution coefficient (default: 1)"}, 1
+        );
+        mu_ = roughWallInput::readNumber<scalar>
+        (
+            dict, "mu",
+            {0, 1, "fraction of the tangential velocity lost (default: 0)"}, 0
+        );
     }
     wordList used{"type"};
     used.append(keywords(type_));
-
-    roughWallInput::checkKeywords(dict, used, string("type ") + typeName());
+    roughWallInput::checkKeywords(dict, used, "type " + typeName());
 }
 
 
@@ -252,86 +203,25 @@ Foam::roughWallPatchSettings::readPatches
     const polyBoundaryMesh& patches
 )
 {
-    // The list of (patch name or regular expression, dictionary): each
-    // dictionary read by OpenFOAM's reader, named after its entry so that
-    // messages point at it
-    auto fatalList = [&](const string& found)
+    // The list of (patch name or regular expression, dictionary), read by
+    // OpenFOAM's List, wordRe and dictionary readers; each dictionary named
+    // after its entry, so that messages point at it
+    const List<patchEntry> entries
+    (
+        roughWallInput::read<List<patchEntry>>
+        (
+            coeffs, "patches",
+            "a list ( name { type ...; ... } \"regex\" { ... } ... ) with at "
+            "least one entry",
+            patchesMeaning
+        )
+    );
+    if (entries.empty())
     {
         roughWallInput::fatalBadEntry
         (
-            coeffs, "patches",
-            "a list ( name { type ...; ... } \"regex\" { ... } ... ) "
-            "with at least one entry",
-            patchesMeaning, found
-        );
-    };
-
-    const entry* eptr = roughWallCompat::findLiteral(coeffs, "patches");
-    if (!eptr || eptr->isDict())
-    {
-        fatalList(eptr ? "a dictionary" : "missing");
-    }
-
-    const string listText =
-        "'" + roughWallInput::entryText(coeffs, "patches") + "'";
-    ITstream& is = eptr->stream();
-    is.rewind();
-
-    DynamicList<roughWallPatchSettings> entries;
-    token t(is);
-    if (!t.isPunctuation() || t.pToken() != token::BEGIN_LIST)
-    {
-        fatalList(listText);
-    }
-    for
-    (
-        t = token(is);
-        !t.isPunctuation() || t.pToken() != token::END_LIST;
-        t = token(is)
-    )
-    {
-        if (!t.isWord() && !t.isString())
-        {
-            fatalList
-            (
-                listText
-              + " (expected a patch name or a quoted regular expression)"
-            );
-        }
-        const keyType name
-        (
-            t.isWord() ? keyType(t.wordToken()) : keyType(t.stringToken())
-        );
-
-        const token brace(is);
-        if (!brace.isPunctuation() || brace.pToken() != token::BEGIN_BLOCK)
-        {
-            fatalList(listText + " (expected '{' after " + name + ")");
-        }
-        is.putBack(brace);
-
-        const fileName dictName
-        (
-            "patches" + (roughWallCompat::scopeSeparator + name)
-        );
-        entries.append
-        (
-            roughWallPatchSettings(name, dictionary(dictName, coeffs, is))
-        );
-    }
-    if (entries.empty())
-    {
-        fatalList("an empty list");
-    }
-
-    // The entry ends at its ';': tokens after the list's ')' (an entry
-    // written after it, say) would be ignored silently
-    if (is.tokenIndex() < is.size())
-    {
-        fatalList
-        (
-            listText + " (tokens after the list's closing ')': '"
-          + roughWallInput::tokensText(is, is.tokenIndex()) + "')"
+            coeffs, "patches", "a list with at least one entry",
+            patchesMeaning, "an empty list"
         );
     }
 
@@ -340,52 +230,32 @@ Foam::roughWallPatchSettings::readPatches
     // applied (a typo, or the same name twice): warned
     List<roughWallPatchSettings> result(patches.size());
     boolList covered(patches.size(), false);
-    forAll(entries, entryi)
+    for (const patchEntry& entry : entries)
     {
-        const keyType& name = entries[entryi].patchName();
+        const wordRe& name = entry.first();
+        dictionary dict(entry.second());
+        dict.name() =
+            coeffs.name() + roughWallCompat::scopeSeparator + "patches"
+          + roughWallCompat::scopeSeparator + name;
+        const roughWallPatchSettings settings(name, dict);
 
-        // OpenFOAM stops at a bad regular expression without naming the
-        // keyword or the file: caught
-        labelList ids;
-        string error;
-        if
-        (
-            !roughWallCompat::callCatching
-            (
-                [&]()
-                {
-                    ids = roughWallCompat::matchingPatches(patches, name);
-                },
-                error
-            )
-        )
-        {
-            fatalList
-            (
-                listText + " (entry \"" + name + "\": " + error + ")"
-            );
-        }
-
+        const labelList ids(roughWallCompat::matchingPatches(patches, name));
         DynamicList<word> taken;
-        bool applied = false;
         for (const label patchi : ids)
         {
             if (covered[patchi])
             {
                 taken.append(patches[patchi].name());
-                continue;
             }
-            result[patchi] = entries[entryi];
+            result[patchi] = covered[patchi] ? result[patchi] : settings;
             covered[patchi] = true;
-            applied = true;
         }
         if (ids.empty())
         {
             IOWarningInFunction(coeffs)
-                << "No patch matches the patches entry "
-                << name << endl;
+                << "No patch matches the patches entry " << name << endl;
         }
-        else if (!applied)
+        else if (taken.size() == ids.size())
         {
             IOWarningInFunction(coeffs)
                 << "The patches entry " << name << " is never applied: "
@@ -406,6 +276,7 @@ Foam::roughWallPatchSettings::readPatches
     {
         const polyPatch& pp = patches[patchi];
         const roughWallPatchSettings& s = result[patchi];
+        const bool wall = isA<wallPolyPatch>(pp);
 
         if (pp.coupled() || isA<emptyPolyPatch>(pp) || isA<wedgePolyPatch>(pp))
         {
@@ -417,20 +288,14 @@ Foam::roughWallPatchSettings::readPatches
             uncovered.append(pp.name());
             continue;
         }
-        if (s.type() == interactionType::none && isA<wallPolyPatch>(pp))
+        if (s.type() == interactionType::none && wall)
         {
             noneOnWalls.append(pp.name());
         }
-        if
-        (
-            s.keepsParcels()
-         && !isA<wallPolyPatch>(pp)
-         && !roughWallCompat::isConstraint(pp)
-        )
+        if (s.keepsParcels() && !wall && !roughWallCompat::isConstraint(pp))
         {
             keptOnNonWalls.append(pp.name());
         }
-
         Info<< "        " << pp.name() << ": ";
         s.writeSummary(Info);
         Info<< nl;
@@ -481,12 +346,15 @@ Foam::wordList Foam::roughWallPatchSettings::keywords
     const interactionType type
 )
 {
-    wordList names;
-    for (const keyword& k : types[label(type)].keywords)
-    {
-        names.append(k.name);
-    }
-    return names;
+    return
+        type == interactionType::rough ? roughKeywords
+      : type == interactionType::rebound ? wordList{"e", "mu"} : wordList();
+}
+
+
+Foam::word Foam::roughWallPatchSettings::typeName() const
+{
+    return typeNames[type_];
 }
 
 
@@ -505,16 +373,17 @@ void Foam::roughWallPatchSettings::warnLateralTiltIn2D(const word& patch) const
 void Foam::roughWallPatchSettings::writeSummary(Ostream& os) const
 {
     os  << typeName();
-
-    const char* separator = ": ";
-    for (const keyword& k : types[label(type_)].keywords)
+    if (type_ == interactionType::rough)
     {
-        if (k.write)
-        {
-            os  << separator << k.name << " = ";
-            k.write(*this, os);
-            separator = ", ";
-        }
+        os  << ": ";
+        coefficients_->writeSummary(os);
+        os  << ", roughnessAngle = " << roughness_.describe().c_str()
+            << ", lateralTilt = " << (rough_.lateralTilt ? "true" : "false")
+            << ", maxFacetCollisions = " << rough_.maxFacetCollisions;
+    }
+    else if (type_ == interactionType::rebound)
+    {
+        os  << ": e = " << e_ << ", mu = " << mu_;
     }
 }
 

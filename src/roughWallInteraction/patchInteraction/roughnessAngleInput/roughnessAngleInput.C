@@ -30,12 +30,19 @@ License
 #include "roughnessAngleInput.H"
 #include "roughWallInput.H"
 #include "foamCompat.H"
-#include "limitsAndUnits.hpp"
-#include "profileFile.hpp"
 #include "OSspecific.H"
 #include "Tuple2.H"
 
 #include <ctime>
+
+// * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * //
+
+ROUGHWALL_NAMED_ENUM
+(
+    estimateNames, Foam::roughnessAngleInput::estimate, 2,
+    "envelope", "closedForm"
+);
+
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -61,102 +68,92 @@ const char* const traceMeaning =
     "given by a line '# units XU ZU'), x strictly increasing; path "
     "absolute or relative to the case";
 
+//- The parameters' keywords, their meanings and places
+const char* const parameterNames[4] = {"Ra", "Rq", "Rz", "RSm"};
 
-//- Delta(d_p) of the envelope of the profile that source describes;
-//- dMin, dMax as EnvelopeAngleTable's; keyword names the entry in the
-//- messages
-roughWall::RoughnessAngle tabulate
+const char* const parameterMeanings[4] =
+{
+    "arithmetic mean height of the profile [m]",
+    "root-mean-square height of the profile [m]",
+    "maximum height (peak to valley) of the profile [m]",
+    "mean width of the profile elements [m]"
+};
+
+double roughWall::ProfileRoughness::* const parameters[4] =
+{
+    &roughWall::ProfileRoughness::Ra,
+    &roughWall::ProfileRoughness::Rq,
+    &roughWall::ProfileRoughness::Rz,
+    &roughWall::ProfileRoughness::RSm
+};
+
+
+//- make(), the core's construction of Delta(d_p), with its errors as a
+//- FatalIOError of dict naming the keyword, what is allowed and what was
+//- found; the tabulation of an envelope logged with its CPU time
+template<class Make>
+roughWall::RoughnessAngle made
 (
-    const dictionary& rDict,
-    const word& keyword,
-    const roughWall::SampledProfile& profile,
-    const string& source,
-    const scalar dMin,
-    const scalar dMax
+    const dictionary& dict,
+    const char* meaning,
+    const Make& make
 )
 {
     const std::clock_t start = std::clock();
-    roughWall::EnvelopeAngleTable envelope;
     try
     {
-        envelope = roughWall::EnvelopeAngleTable(profile, dMin, dMax);
+        const roughWall::RoughnessAngle r(make());
+        const roughWall::EnvelopeAngleTable& envelope = r.envelopeTable();
+        if (r.form() == roughWall::RoughnessAngle::Form::envelope)
+        {
+            Info<< "    " << dict.name().c_str() << ": Delta(d_p) of the "
+                << "rolling-sphere envelope of the " << r.source().c_str()
+                << " tabulated at " << label(envelope.rows())
+                << " diameters from " << envelope.dMin() << " to "
+                << envelope.dMax() << " m in "
+                << scalar(std::clock() - start)/CLOCKS_PER_SEC << " s CPU"
+                << endl;
+        }
+        return r;
     }
-    catch (const std::exception& err)
+    catch (const roughWall::BadRoughness& err)
     {
+        const word key(err.keyword);
+        const string wrong(err.what());
         roughWallInput::fatalBadEntry
         (
-            rDict, keyword,
-            "a profile longer than twice its largest point spacing",
-            profileMeaning, source + ": " + err.what()
+            dict, key, err.allowed, meaning,
+            (
+                roughWallCompat::findLiteral(dict, key)
+              ? "'" + roughWallInput::entryText(dict, key) + "'"
+              : string("missing")
+            )
+          + (wrong.empty() ? "" : " (" + wrong + ")")
         );
     }
-    const scalar seconds = scalar(std::clock() - start)/CLOCKS_PER_SEC;
-
-    const scalar maxDeg = roughWall::limits::maxRoughnessAngleDeg;
-    const scalar maxFound = roughWall::limits::radToDeg(envelope.maxAngle());
-    if (maxFound > maxDeg)
-    {
-        roughWallInput::fatalBadEntry
-        (
-            rDict, keyword,
-            "a profile whose Delta(d_p) is at most " + Foam::name(maxDeg)
-          + " deg (the model's limit)",
-            profileMeaning,
-            source + ": Delta up to " + Foam::name(maxFound) + " deg"
-        );
-    }
-
-    Info<< "    " << rDict.name().c_str() << ": Delta(d_p) of the "
-        << "rolling-sphere envelope of the " << source.c_str()
-        << " tabulated at " << label(envelope.rows()) << " diameters from "
-        << envelope.dMin() << " to " << envelope.dMax() << " m in "
-        << seconds << " s CPU" << endl;
-
-    return roughWall::RoughnessAngle::envelope(envelope, source);
 }
 
 
 //- roughnessAngle: a constant or a List<Tuple2> table [deg]
 roughWall::RoughnessAngle readAngle(const dictionary& dict)
 {
-    const scalar maxDeg = roughWall::limits::maxRoughnessAngleDeg;
-    const string allowed =
-        "a number in [0, " + Foam::name(maxDeg)
-      + "] or a table ((d1 Delta1) (d2 Delta2) ...) with Delta in [0, "
-      + Foam::name(maxDeg) + "] and d >= 0 strictly increasing";
-
     const entry& e = *roughWallCompat::findLiteral(dict, "roughnessAngle");
-    const string found =
-        "'" + roughWallInput::entryText(dict, "roughnessAngle") + "'";
+    const string allowed(roughWall::roughnessAngleAllowed());
 
-    auto fatal = [&](const string& what)
-    {
-        roughWallInput::fatalBadEntry
-        (
-            dict, "roughnessAngle", allowed, angleMeaning, what
-        );
-    };
-
-    if (e.isDict())
-    {
-        fatal("a dictionary");
-    }
-
-    // A constant, or a table (d Delta) read by OpenFOAM's List<Tuple2>
+    // A number, or a table (d Delta) read by OpenFOAM's List<Tuple2>
+    scalar angle = 0;
     List<Tuple2<scalar, scalar>> table;
-    const bool constant = e.stream().size() && e.stream()[0].isNumber();
-    if (constant)
+    string why;
+    if (roughWallCompat::readWhole(e, [&]() { e.stream() >> angle; }, why))
     {
-        scalar angle = 0;
-        if (!roughWallCompat::readAll(e.stream(), angle))
-        {
-            fatal(found);
-        }
         table.setSize(1, Tuple2<scalar, scalar>(0, angle));
     }
-    else if (!roughWallCompat::readAll(e.stream(), table) || table.empty())
+    else
     {
-        fatal(found);
+        table = roughWallInput::read<List<Tuple2<scalar, scalar>>>
+        (
+            dict, "roughnessAngle", allowed, angleMeaning
+        );
     }
 
     std::vector<roughWall::RoughnessAngle::Row> rows;
@@ -164,17 +161,10 @@ roughWall::RoughnessAngle readAngle(const dictionary& dict)
     {
         rows.emplace_back(row.first(), row.second());
     }
-    const long bad = roughWall::RoughnessAngle::firstBadRow(rows);
-    if (bad >= 0)
-    {
-        fatal
-        (
-            constant
-          ? found
-          : string(found + " (row " + Foam::name(label(bad + 1)) + ")")
-        );
-    }
-    return roughWall::RoughnessAngle::table(rows);
+    return made
+    (
+        dict, angleMeaning, [&]() { return roughWall::roughnessOfRows(rows); }
+    );
 }
 
 
@@ -199,16 +189,10 @@ roughWall::RoughnessAngle readProfile(const dictionary& dict)
     dictionary rDict(e.dict());
     rDict.name() =
         fileName(dict.name() + roughWallCompat::scopeSeparator + "roughness");
-
-    static const wordList names{"profile", "Ra", "Rq", "Rz", "RSm", "estimate"};
-    static const char* const meanings[] =
+    const wordList names
     {
-        "arithmetic mean height of the profile [m]",
-        "root-mean-square height of the profile [m]",
-        "maximum height (peak to valley) of the profile [m]",
-        "mean width of the profile elements [m]"
+        "profile", "Ra", "Rq", "Rz", "RSm", "estimate"
     };
-
     roughWallInput::checkKeywords(rDict, names, "roughness");
 
     // A measured trace: the wall itself, nothing else beside it
@@ -229,11 +213,7 @@ roughWall::RoughnessAngle readProfile(const dictionary& dict)
             }
         }
 
-        const string allowed =
-            "a readable trace of at least "
-          + Foam::name(label(roughWall::minProfilePoints))
-          + " points, lines 'x z' with finite numbers, x strictly increasing "
-            "(docs/roughWallInteraction.md)";
+        const string allowed(roughWall::profileFileAllowed());
         const fileName given = roughWallInput::read<fileName>
         (
             rDict, "profile", allowed, traceMeaning
@@ -254,98 +234,47 @@ roughWall::RoughnessAngle readProfile(const dictionary& dict)
         {
             path = fileName(getEnv("FOAM_CASE"))/path;
         }
-
-        roughWall::SampledProfile trace;
-        try
-        {
-            trace =
-                roughWall::levelledProfile(roughWall::readProfileFile(path));
-        }
-        catch (const std::exception& err)
-        {
-            roughWallInput::fatalBadEntry
-            (
-                rDict, "profile", allowed, traceMeaning, string(err.what())
-            );
-        }
-        return tabulate
+        return made
         (
-            rDict, "profile", trace,
-            "profile " + path + " (" + Foam::name(label(trace.x.size()))
-          + " points, levelled)",
-            0, 0
+            rDict, traceMeaning,
+            [&]() { return roughWall::roughnessOfTrace(path); }
         );
     }
 
-    roughWall::ProfileRoughness parameters;
-    double* values[] =
-        {&parameters.Ra, &parameters.Rq, &parameters.Rz, &parameters.RSm};
+    // The parameters, of any sign (the core checks them) but NaN
+    roughWall::ProfileRoughness p;
     bool given[4];
     for (label i = 0; i < 4; ++i)
     {
-        const word& name = names[i + 1];
-        given[i] = roughWallCompat::findLiteral(rDict, name);
-
-        // The signs are checked with the other limits below
-        *values[i] =
+        given[i] = roughWallCompat::findLiteral(rDict, parameterNames[i]);
+        p.*parameters[i] =
             given[i]
           ? roughWallInput::readNumber<scalar>
             (
-                rDict, name, {-GREAT, GREAT, meanings[i]}
+                rDict, parameterNames[i],
+                {-GREAT, GREAT, parameterMeanings[i]}
             )
           : 0;
     }
-
-    const roughWall::ProfileRoughnessError error =
-        roughWall::checkProfileRoughness
-        (
-            parameters, given[0], given[1], given[2]
-        );
-
-    if (!error.keyword.empty())
-    {
-        const word key(error.keyword);
-        roughWallInput::fatalBadEntry
-        (
-            rDict, key, error.allowed, profileMeaning,
-            roughWallCompat::findLiteral(rDict, key)
-          ? "'" + roughWallInput::entryText(rDict, key) + "'"
-          : string("missing")
-        );
-    }
-
-    // How Delta(d) follows from the parameters: the envelope of the
-    // synthetic Gaussian profile (default), or the closed-form estimate
-    // (docs/roughWallInteraction.md: its figure shows where they differ)
-    const bool closedForm = roughWallInput::readChoice
+    const bool closedForm = roughWallInput::readEnum
     (
-        rDict, "estimate", {"envelope", "closedForm"},
+        rDict, "estimate", estimateNames,
         "how Delta(d_p) follows from the parameters: the rolling-sphere "
         "envelope of a synthetic Gaussian profile (envelope, default) "
         "or atan(2 pi Rq / max(RSm, d_p)) (closedForm)",
-        0
-    ) == 1;
+        roughnessAngleInput::estimate::envelope
+    ) == roughnessAngleInput::estimate::closedForm;
 
-    if (closedForm)
-    {
-        return roughWall::RoughnessAngle::closedForm(parameters);
-    }
-
-    const roughWall::SyntheticProfileSettings synthetic =
-        roughWall::gaussianProfileOf(parameters);
-    const roughWall::SampledProfile profile =
-        roughWall::syntheticGaussianProfile(synthetic);
-
-    // Below RSm/10 Delta is at its small-sphere limit (to 3e-4 deg); above
-    // 100 RSm it has fallen to a tenth of it
-    return tabulate
+    return made
     (
-        rDict, given[1] ? "Rq" : given[0] ? "Ra" : "Rz", profile,
-        "synthetic Gaussian profile, Rq = " + Foam::name(synthetic.Rq)
-      + " m, RSm = " + Foam::name(synthetic.RSm) + " m ("
-      + Foam::name(label(profile.x.size())) + " points, seed "
-      + Foam::name(label(synthetic.seed)) + ")",
-        synthetic.RSm/10, 100*synthetic.RSm
+        rDict, profileMeaning,
+        [&]()
+        {
+            return roughWall::roughnessOfParameters
+            (
+                p, given[0], given[1], given[2], closedForm
+            );
+        }
     );
 }
 

@@ -32,16 +32,19 @@ License
 #include "foamCompat.H"
 #include "OStringStream.H"
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * //
 
-namespace
-{
-
-//- Names of the coefficients, in the order of the core's enumerations
-const Foam::wordList liftNames{"RubinowKeller", "OesterleBuiDinh", "Loth"};
-const Foam::wordList torqueNames{"Stokes", "DennisSinghIngham"};
-
-} // End anonymous namespace
+// The names of the coefficients, in the order of the core's enumerations
+ROUGHWALL_NAMED_ENUM
+(
+    liftNames, roughWall::spin::LiftCoefficient, 3,
+    "RubinowKeller", "OesterleBuiDinh", "Loth"
+);
+ROUGHWALL_NAMED_ENUM
+(
+    torqueNames, roughWall::spin::TorqueCoefficient, 2,
+    "Stokes", "DennisSinghIngham"
+);
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -53,17 +56,15 @@ roughWall::spin::LiftCoefficient Foam::spinModels::readLiftCoefficient
 {
     using roughWall::spin::LiftCoefficient;
 
-    const label i = roughWallInput::readChoice
+    return roughWallInput::readEnum
     (
         dict, "coefficient", liftNames,
         "rotational lift coefficient C_LR: OesterleBuiDinh (Oesterle & "
         "Bui Dinh 1998), RubinowKeller (Rubinow & Keller 1961, Re_p << 1) "
         "or Loth (Loth 2008, Re_p < 2000, Omega* = 2 Gamma < 20)"
         " (default: OesterleBuiDinh)",
-        label(LiftCoefficient::OesterleBuiDinh)
+        LiftCoefficient::OesterleBuiDinh
     );
-
-    return LiftCoefficient(i);
 }
 
 
@@ -75,16 +76,14 @@ Foam::spinModels::readTorqueCoefficient
 {
     using roughWall::spin::TorqueCoefficient;
 
-    const label i = roughWallInput::readChoice
+    return roughWallInput::readEnum
     (
         dict, "coefficient", torqueNames,
         "rotational drag coefficient C_R: DennisSinghIngham (Dennis, Singh "
         "& Ingham 1980) or Stokes (64 pi/Re_R at every Re_R) (default: "
         "DennisSinghIngham)",
-        label(TorqueCoefficient::DennisSinghIngham)
+        TorqueCoefficient::DennisSinghIngham
     );
-
-    return TorqueCoefficient(i);
 }
 
 
@@ -93,7 +92,7 @@ Foam::word Foam::spinModels::name
     const roughWall::spin::LiftCoefficient c
 )
 {
-    return liftNames[label(c)];
+    return liftNames[c];
 }
 
 
@@ -102,7 +101,7 @@ Foam::word Foam::spinModels::name
     const roughWall::spin::TorqueCoefficient c
 )
 {
-    return torqueNames[label(c)];
+    return torqueNames[c];
 }
 
 
