@@ -178,28 +178,30 @@ def source_hash(path):
     return hashlib.sha1(read_text(path).encode()).hexdigest()
 
 
-def cached(name, args, compute):
+def cached(name, args, compute, label=None):
     """compute(), a JSON value, kept in $ROUGHWALL_ORACLE_CACHE (set by
     ctest) under name and args (a JSON dict; with the oracle's source hash
     added) and reused by the other tests and platforms: for oracle results
     that are deterministic and take seconds to compute.  Tuples come back
-    as lists."""
+    as lists.  label: what the line in the output calls it (name)."""
     cache = os.environ.get("ROUGHWALL_ORACLE_CACHE")
     args = dict(args, oracle=source_hash(roughWallOracle.__file__))
     key = hashlib.sha1(json.dumps([name, args], sort_keys=True).encode())
     path = os.path.join(cache, "%s.%s.json" % (name, key.hexdigest())) \
         if cache else None
     if path and os.path.exists(path):
-        print("oracle: %s (cached)" % name, flush=True)
-        return json.loads(read_text(path))["value"]
-    start = time.time()
-    value = compute()
-    print("oracle: %s (%.1f s)" % (name, time.time() - start), flush=True)
-    if path:
-        os.makedirs(cache, exist_ok=True)
-        tmp = "%s.%d" % (path, os.getpid())
-        write_text(tmp, json.dumps({"args": args, "value": value}))
-        os.replace(tmp, path)
+        value = json.loads(read_text(path))["value"]
+        how = "cached"
+    else:
+        start = time.time()
+        value = compute()
+        how = "%.1f s" % (time.time() - start)
+        if path:
+            os.makedirs(cache, exist_ok=True)
+            tmp = "%s.%d" % (path, os.getpid())
+            write_text(tmp, json.dumps({"args": args, "value": value}))
+            os.replace(tmp, path)
+    print("oracle: %s (%s)" % (label or name, how), flush=True)
     return value
 
 
@@ -211,40 +213,22 @@ def reference(spin, delta_deg, alphas, samples=1000000, seed=1, e=0.8,
     numpy's PCG64 seeded with seed; spin: spin produced by a facet collision
     carried into the next (a cloud with spin).
 
-    Results are deterministic; with $ROUGHWALL_ORACLE_CACHE (set by ctest)
-    each angle's row is kept there, keyed by the arguments and the oracle's
-    source, and reused by the other tests and platforms."""
-    cache = os.environ.get("ROUGHWALL_ORACLE_CACHE")
-    source = hashlib.sha1(read_text(roughWallOracle.__file__).encode())
+    Results are deterministic; each angle's row is cached() and reused by
+    the other tests and platforms."""
     rows = {}
     for alpha in alphas:
         args = dict(alpha_deg=float(alpha), Delta_deg=float(delta_deg),
                     e=e, mu0=mu0, muD=muD, samples=int(samples), seed=seed,
-                    spin=bool(spin), lateral=bool(lateral_tilt),
-                    oracle=source.hexdigest())
-        key = hashlib.sha1(json.dumps(args, sort_keys=True).encode())
-        path = os.path.join(cache, key.hexdigest() + ".json") if cache \
-            else None
-        if path and os.path.exists(path):
-            rows[alpha] = json.loads(read_text(path))["row"]
-            how = "cached"
-        else:
-            start = time.time()
-            rows[alpha] = roughWallOracle.restitution_statistics(
+                    spin=bool(spin), lateral=bool(lateral_tilt))
+        rows[alpha] = cached(
+            "restitution", args,
+            lambda: roughWallOracle.restitution_statistics(
                 [alpha], delta_deg, e=e, mu0=mu0, muD=muD, samples=samples,
                 rng=np.random.default_rng(seed), spin=bool(spin),
-                lateral=bool(lateral_tilt))[0]
-            how = "%.1f s" % (time.time() - start)
-            if path:
-                os.makedirs(cache, exist_ok=True)
-                tmp = "%s.%d" % (path, os.getpid())
-                write_text(tmp, json.dumps({"args": args,
-                                            "row": rows[alpha]}))
-                os.replace(tmp, path)
-        print("oracle: alpha = %.4g deg, Delta = %g deg, %s%s, %d samples "
-              "(%s)" % (alpha, delta_deg, "spin" if spin else "no spin",
-                        ", lateral tilt" if lateral_tilt else "", samples,
-                        how), flush=True)
+                lateral=bool(lateral_tilt))[0],
+            label="alpha = %.4g deg, Delta = %g deg, %s%s, %d samples"
+            % (alpha, delta_deg, "spin" if spin else "no spin",
+               ", lateral tilt" if lateral_tilt else "", samples))
     return rows
 
 
