@@ -73,14 +73,16 @@ class Group:
 def make_case(path, groups, walls, box=((-0.1, 0, -0.05), (0.1, 0.1, 0.05)),
               cells=(20, 10, 10), end_time=0.05, delta_t=1e-3,
               two_d=False, write_d=True, gravity=False, lowerWall=None,
-              n_procs=1, outer_correctors=None):
+              n_procs=1, outer_correctors=None, drag=False):
     """Write the case in path (created).  walls: the U condition of the
     walls (a dictionary body, e.g. 'type roughVelocity; e 0.8; ...');
     lowerWall: another condition for lowerWall only.  write_d: the cloud's
     d field.  outer_correctors N: the carrier solved by incompressibleFluid
-    (at rest, no drag: nothing moves it) with the cloud as an fvModel, N
+    (at rest; without drag nothing moves it) with the cloud as an fvModel, N
     PIMPLE outer correctors and the cloud's outerCorrectors on (the cloud
-    re-tracks each step N times from its start)."""
+    re-tracks each step N times from its start).  drag: Schiller-Naumann
+    drag on the particles (with outer_correctors, the cloud's momentum
+    source then changes the carrier from one corrector to the next)."""
     os.makedirs(path, exist_ok=True)
     (x0, y0, z0), (x1, y1, z1) = box
     nx, ny, nz = cells
@@ -187,7 +189,7 @@ ddtSchemes
 
 SpSchemes
 {
-    default     none;
+    default     %s;
 }
 
 averagingSchemes
@@ -202,7 +204,7 @@ accumulationSchemes
 {
     default     cell;
 }
-""")
+""" % ("implicit" if drag else "none"))
     write(path, "system/" + lag + "/LagrangianSolution", "dictionary",
           "maxTimeStepFraction 1;\n\nmaxCellLengthScaleFraction 1;\n\n"
           "nCorrectors     0;\n\nouterCorrectors %s;\n"
@@ -227,6 +229,8 @@ accumulationSchemes
                          g.name + "Positions", g.positions)
     if gravity:
         models.append("gravity\n{\n    type        gravity;\n}\n")
+    if drag:
+        models.append("drag\n{\n    type        SchillerNaumannDrag;\n}\n")
     write(path, "constant/" + lag + "/LagrangianModels", "dictionary",
           "\n".join(models))
     write(path, "0/U", "volVectorField", """

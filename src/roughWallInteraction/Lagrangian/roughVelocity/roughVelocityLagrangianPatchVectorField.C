@@ -203,22 +203,15 @@ uint64_t Foam::roughVelocityLagrangianPatchVectorField::hitSeed
     h = combine(h, uint64_t(db().time().timeIndex()));
     h = combine(h, uint64_t(Pstream::myProcNo()));
 
-    // The particle's identity within the step: where it started the step if
-    // the mesh keeps that (outer correctors re-track from there, and the
-    // same particle must then meet the same facets), else where it hits
-    const barycentricIODynamicField& coordinates = mesh.coordinates();
-    const labelIODynamicField& celli = mesh.celli();
+    // The particle's identity: where it hits.  Not where it started the
+    // step: the mesh's old-time positions are in the order of the start of
+    // the step while partitioning has reordered the particles since, and
+    // the final outer corrector clears them before it tracks
+    // (LagrangianMesh::reset).  Outer correctors reach the same hit, and so
+    // draw the same, unless the carrier moved the particle before it
+    const barycentric& c = mesh.coordinates()[i];
 
-    const bool startOfStep =
-        coordinates.nOldTimes(false) > 0
-     && celli.nOldTimes(false) > 0
-     && coordinates.oldTime().size() == coordinates.size()
-     && celli.oldTime().size() == celli.size();
-
-    const barycentric& c =
-        startOfStep ? coordinates.oldTime()[i] : coordinates[i];
-
-    h = combine(h, uint64_t(startOfStep ? celli.oldTime()[i] : celli[i]));
+    h = combine(h, uint64_t(mesh.celli()[i]));
     for (direction cmpt = 0; cmpt < barycentric::nComponents; ++cmpt)
     {
         h = combine(h, bits(c[cmpt]));
