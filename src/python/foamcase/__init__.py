@@ -49,7 +49,7 @@ from .platforms import (PLATFORMS, DEFAULT_PLATFORM, FOUNDATION_PLATFORMS,
                         SPIN, LIBRARY, Platform, find_library,
                         library_search_path, ldd, environment_library)
 from .dictionaries import (NUMBER, read_text, write_text, replace_in_file,
-                           strip_header,
+                           strip_header, write_text_atomic,
                            foam_header, write_vectors, dict_entry, set_entry)
 from .fields import read_field, internal_field, patch_values
 from .mesh import MeshGeometry
@@ -66,6 +66,7 @@ __all__ = [
     "PLATFORMS", "DEFAULT_PLATFORM", "FOUNDATION_PLATFORMS", "SPIN", "LIBRARY", "Platform", "find_library",
     "library_search_path", "ldd", "environment_library",
     "NUMBER", "read_text", "write_text", "replace_in_file", "strip_header",
+    "write_text_atomic",
     "foam_header",
     "write_vectors", "dict_entry", "set_entry",
     "read_field", "internal_field", "patch_values",

@@ -3,6 +3,7 @@
 SPDX-License-Identifier: GPL-3.0-or-later
 """
 
+import os
 import re
 
 from .errors import FoamError
@@ -19,6 +20,16 @@ def read_text(path):
 def write_text(path, text):
     with open(path, "w") as f:
         f.write(text)
+
+
+def write_text_atomic(path, text):
+    """Write path whole or not at all (a temporary file of this process,
+    renamed): tests running at the same time may share the file (the
+    caches of the test run)."""
+    os.makedirs(os.path.dirname(path) or ".", exist_ok=True)
+    tmp = "%s.%d" % (path, os.getpid())
+    write_text(tmp, text)
+    os.replace(tmp, path)
 
 
 def replace_in_file(path, pattern, replacement, count=1, flags=re.M):

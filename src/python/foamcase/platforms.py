@@ -22,6 +22,7 @@ import os
 import re
 import subprocess
 
+from .dictionaries import write_text_atomic
 from .errors import FoamError
 
 #: etc/platforms of the checkout holding this package: the platforms and
@@ -177,10 +178,7 @@ def ldd(path):
         out = subprocess.run(["ldd", path], stdout=subprocess.PIPE,
                              stderr=subprocess.STDOUT, text=True).stdout
         if cache:
-            os.makedirs(os.path.dirname(saved), exist_ok=True)
-            with open("%s.%d" % (saved, os.getpid()), "w") as f:
-                f.write(out)
-            os.replace("%s.%d" % (saved, os.getpid()), saved)
+            write_text_atomic(saved, out)
     deps = {}
     for line in out.splitlines():
         m = re.match(r"\s*(\S+)\s+=>\s+(\S+(?: found)?)", line)

@@ -38,7 +38,7 @@ from foamcase.checking import PASSED, TestFailure, check  # noqa: F401
 from foamcase.testConstants import parcel_mass
 from foamcase import (LIBRARY, PLATFORMS, SPIN, FoamCase, FoamError,
                       Injector, Platform, environment_library, find_library,
-                      ldd, read_text, write_text)
+                      ldd, read_text, write_text, write_text_atomic)
 
 REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
 #: The folder of the OpenFOAM tests and their case templates
@@ -197,10 +197,8 @@ def cached(name, args, compute, label=None):
         value = compute()
         how = "%.1f s" % (time.time() - start)
         if path:
-            os.makedirs(cache, exist_ok=True)
-            tmp = "%s.%d" % (path, os.getpid())
-            write_text(tmp, json.dumps({"args": args, "value": value}))
-            os.replace(tmp, path)
+            write_text_atomic(path, json.dumps({"args": args,
+                                                "value": value}))
     print("oracle: %s (%s)" % (label or name, how), flush=True)
     return value
 
