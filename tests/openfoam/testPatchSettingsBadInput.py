@@ -192,6 +192,14 @@ CASES = [
     ("patches entry without dictionary",
      settings(outlet="outlet escape;"),
      [key("patches"), "roughWallInteractionCoeffs", "outlet", "{"]),
+    ("incidenceAngleBins zero",
+     settings(coeffs="    incidenceAngleBins 0;\n"),
+     [key("incidenceAngleBins"), "roughWallInteractionCoeffs", INTEGER,
+      "[1, 900]", "'0'"]),
+    ("incidenceAngleBins not an integer",
+     settings(coeffs="    incidenceAngleBins 4.5;\n"),
+     [key("incidenceAngleBins"), "roughWallInteractionCoeffs", INTEGER,
+      "[1, 900]", "'4.5'"]),
 ]
 
 #: Signs of a crash instead of a clean fatal error (a stack trace; not the

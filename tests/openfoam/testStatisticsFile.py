@@ -90,6 +90,11 @@ from foamcase.testConstants import parcel_mass, sphere_mass
 
 E, MU0, MUD, DELTA_DEG = 0.8, 0.1, 0.1, 6.0
 
+#: Bins of the angle statistics (incidenceAngleBins): 12.86 deg wide, so
+#: that the groups' incidence angles (60, 75, 90 deg) lie inside bins 4, 5
+#: and 6, not on an edge
+BINS = 7
+
 #: The write the restart starts from: after every rough-wall hit (t < 0.01)
 #: and every escape of group E (t < 0.03), before the first parcel reaches
 #: upperWall from below (t > 0.1). (On OpenFOAM-13's functions solver the
@@ -235,7 +240,8 @@ def part1(args, platform):
     n = args.parcels
     spin = fc.SPIN[args.cloud]
     case = make_case(platform, os.path.join(args.work, "columns"),
-                     args.cloud, n, ROUGH_UPPER)
+                     args.cloud, n, ROUGH_UPPER,
+                     extra="incidenceAngleBins %d;" % BINS)
     case.mesh()
     case.solve()
     fields = ["U", "d", "nParticle"] + (["angularMomentum"] if spin else [])
@@ -246,6 +252,7 @@ def part1(args, platform):
     t.check(np.count_nonzero(groups == "E") == 0, "group E has left")
     _, rows = case.read_statistics()
     last = rows[-1]
+    _, angle_rows = case.read_statistics(fc.ANGLE_STATISTICS)
 
     def col(name):
         return fc.column(last, name)
@@ -314,6 +321,7 @@ def part1(args, platform):
                     % (wall, name, col(wall + "_" + name), value,
                        " (normal incidence included)"
                        if np.any(normal) and "Vn" in name else ""))
+        t.check_angle_bins(angle_rows, wall, v0, v1, Nw, last, BINS)
         t.check(close(col(wall + "_energyLoss"), loss.sum(), 1e-6),
                 "%s_energyLoss %.10g = parcels' %.10g (nParticle counted)"
                 % (wall, col(wall + "_energyLoss"), loss.sum()))
@@ -370,7 +378,8 @@ def part2(args, platform):
 
     def run(name, interval):
         case = make_case(platform, os.path.join(args.work, name), args.cloud,
-                         n, stick, extra="writePrecision 17;")
+                         n, stick, extra="writePrecision 17; "
+                         "incidenceAngleBins %d;" % BINS)
         case.mesh()
         case.set_control(endTime=end, writeInterval=interval,
                          writePrecision="6")
@@ -436,6 +445,22 @@ def part2(args, platform):
         a, b = last_r.get(key), last_u[key]
         t.check(a is not None and close(a, b, write_tolerance(key), 1e-300),
                 "restart: last row %s = %r, uninterrupted %r" % (key, a, b))
+
+    # The angle bins (lowerWall's hits, all before the first write) at the
+    # end: the same in the three runs, exactly (stored with 17 digits)
+    def last_bins(case):
+        _, rows = case.read_statistics(fc.ANGLE_STATISTICS)
+        return [r for r in rows if abs(r["Time"] - float(end)) < 1e-9]
+    bins_u = last_bins(uninterrupted)
+    t.check(len(bins_u) == BINS and all(r["patch"] == "lowerWall"
+                                         for r in bins_u)
+            and sum(r["hits"] for r in bins_u) == 2 * n,
+            "uninterrupted: the %d rows of lowerWall's bins at %s (the rough "
+            "patch) hold its %d hits" % (BINS, end, 2 * n))
+    for name, case in (("midRun", mid), ("restart", restart)):
+        t.check(last_bins(case) == bins_u,
+                "%s: lowerWall's angle bins at %s equal the uninterrupted "
+                "run's, exactly" % (name, end))
 
 
 def parse_args():

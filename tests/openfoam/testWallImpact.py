@@ -84,6 +84,9 @@ def parse_args():
     p.add_argument("--np", type=int, default=1)
     p.add_argument("--wallVelocity", type=float, default=0.0,
                    help="lowerWall moves at (wallVelocity 0 0)")
+    p.add_argument("--incidenceAngleBins", type=int, default=0,
+                   help="set incidenceAngleBins and check the angle file "
+                   "against the parcels (t.check_angle_bins)")
     p.add_argument("--repeat", action="store_true",
                    help="run the meshed (and decomposed) case a second time "
                         "and require the same parcels and statistics file")
@@ -135,6 +138,12 @@ def test():
         profileOracle.write_profile(case.file("constant/wallProfile"))
     if args.wallVelocity:
         t.set_wall_velocity(case, args.wallVelocity)
+    if args.incidenceAngleBins:
+        fc.replace_in_file(case.file("constant/roughWallSettings"),
+                           r"^roughWallInteractionCoeffs\n\{\n",
+                           "roughWallInteractionCoeffs\n{\n    "
+                           "incidenceAngleBins %d;\n"
+                           % args.incidenceAngleBins)
     case.mesh(args.np)
     if args.repeat:
         repeat = os.path.join(args.work, "repeat")
@@ -268,6 +277,13 @@ def test():
             and 1 <= per_hit < 1.5,
             "statistics file: facetPerHit %.6f = (noSlip + sliding)/hits"
             % per_hit)
+
+    if args.incidenceAngleBins:
+        # (summed over the processors: each holds some of the hits)
+        _, angle_rows = case.read_statistics(fc.ANGLE_STATISTICS)
+        Nw = np.broadcast_to([0.0, 1.0, 0.0], U.shape)
+        t.check_angle_bins(angle_rows, "lowerWall", incident, U_rel, Nw,
+                           last, args.incidenceAngleBins)
 
     if args.repeat:
         check_repeat(case, repeat)

@@ -55,7 +55,8 @@ from .fields import read_field, internal_field, patch_values
 from .mesh import MeshGeometry
 from .lagrangian import (processor_roots, time_dirs, cloud_dirs, read_cloud,
                          read_positions, cloud_parts)
-from .logs import (statistics_path, read_statistics, column, read_steps,
+from .logs import (STATISTICS, ANGLE_STATISTICS, statistics_path,
+                   read_statistics, column, read_steps,
                    system_escapes, parcel_counts, final_parcels)
 from .running import run, mpirun, block_mesh
 from .tables import read_csv
@@ -73,6 +74,7 @@ __all__ = [
     "MeshGeometry",
     "processor_roots", "time_dirs", "cloud_dirs", "read_cloud", "read_positions",
     "cloud_parts",
+    "STATISTICS", "ANGLE_STATISTICS",
     "statistics_path", "read_statistics", "column", "read_steps",
     "system_escapes", "parcel_counts", "final_parcels",
     "run", "mpirun",

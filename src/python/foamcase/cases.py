@@ -22,7 +22,7 @@ from .dictionaries import (dict_entry, foam_header, read_text, replace_in_file,
                            set_entry, write_text, write_vectors)
 from .errors import FoamError
 from .lagrangian import cloud_dirs, cloud_parts, read_cloud
-from .logs import read_statistics, read_steps, statistics_path
+from .logs import STATISTICS, read_statistics, read_steps, statistics_path
 from .platforms import SPIN
 from .running import block_mesh, mpirun, run
 
@@ -253,8 +253,8 @@ boundaryField
     def cloud_parts(self, time_name, fields=("U", "d", "angularMomentum")):
         return cloud_parts(self.path, time_name, fields, self.platform.cloud)
 
-    def read_statistics(self):
-        return read_statistics(self.path, self.platform.cloud)
+    def read_statistics(self, name=STATISTICS):
+        return read_statistics(self.path, self.platform.cloud, name)
 
     def statistics_file(self, time_name):
         return statistics_path(self.path, self.platform.cloud, time_name)

@@ -12,16 +12,29 @@ from .dictionaries import NUMBER, read_text
 from .errors import FoamError
 
 
-def statistics_path(case, cloud, time_name="*"):
+#: The statistics file of roughWallInteraction, and its file of the angle
+#: bins (incidenceAngleBins)
+STATISTICS = "roughWallInteraction.dat"
+ANGLE_STATISTICS = "roughWallInteractionAngles.dat"
+
+
+def statistics_path(case, cloud, time_name="*", name=STATISTICS):
     return os.path.join(case, "postProcessing", "lagrangian", cloud,
-                        "patchInteractionModel", time_name,
-                        "roughWallInteraction.dat")
+                        "patchInteractionModel", time_name, name)
 
 
-def read_statistics(case, cloud):
-    """Rows of the statistics file(s), oldest start time first.
-    Returns (column names, list of rows as dicts)."""
-    pattern = statistics_path(case, cloud)
+def number_or_word(text):
+    try:
+        return float(text)
+    except ValueError:
+        return text
+
+
+def read_statistics(case, cloud, name=STATISTICS):
+    """Rows of the statistics file(s) (or of the angle file: name
+    ANGLE_STATISTICS, whose patch column is a word), oldest start time
+    first.  Returns (column names, list of rows as dicts)."""
+    pattern = statistics_path(case, cloud, name=name)
     files = sorted(glob.glob(pattern),
                    key=lambda p: float(os.path.basename(os.path.dirname(p))))
     if not files:
@@ -38,7 +51,8 @@ def read_statistics(case, cloud):
                 if line.startswith("# Time"):
                     names = line[1:].split()
                 elif line.strip() and not line.startswith("#"):
-                    rows.append(dict(zip(names, map(float, line.split()))))
+                    rows.append(dict(zip(names, map(number_or_word,
+                                                    line.split()))))
     return names, rows
 
 

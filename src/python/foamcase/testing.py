@@ -38,7 +38,7 @@ from foamcase.checking import PASSED, TestFailure, check  # noqa: F401
 from foamcase.testConstants import parcel_mass
 from foamcase import (LIBRARY, PLATFORMS, SPIN, FoamCase, FoamError,
                       Injector, Platform, environment_library, find_library,
-                      ldd, read_text, write_text, write_text_atomic)
+                      column, ldd, read_text, write_text, write_text_atomic)
 
 REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
 #: The folder of the OpenFOAM tests and their case templates
@@ -376,6 +376,69 @@ CLOSED_BOX = os.path.join(REPO, "tests", "stability", "openfoam", "closedBox")
 #: The box [m]
 BOX = (np.zeros(3), np.full(3, 0.1))
 
+
+
+def check_angle_bins(rows, wall, v0, v1, Nw, last, bins):
+    """The rows of wall in the angle file (incidenceAngleBins bins) at the
+    last write against the parcels' incident v0 and rebound v1 velocities
+    (rows, relative to the wall; Nw the mean-wall normals into the fluid;
+    one hit per parcel).  Oracle: the incidence angle atan(|V'.N|/|V'_t|)
+    and rebound angle atan(V''.N/|V''_t|) of each parcel, binned here (bins
+    of 90/bins deg; the caller's incidence angles lie inside bins, not on
+    an edge); per bin the hits, the hits with a tangential part, the four
+    sums and their ratios, and the rebound histogram; and an invariant: the
+    bins add up to the totals of the statistics file (row last)."""
+    mine = [r for r in rows if r["patch"] == wall
+            and r["Time"] == rows[-1]["Time"]]
+    check([int(r["bin"]) for r in mine] == list(range(bins)),
+          "%s: %d rows of the angle file at t = %g, bins 0..%d"
+          % (wall, len(mine), rows[-1]["Time"], bins - 1))
+    vn0 = np.abs(np.einsum("ij,ij->i", v0, Nw))
+    vt0 = v0 - np.einsum("ij,ij->i", v0, Nw)[:, None]*Nw
+    lt0 = np.linalg.norm(vt0, axis=1)
+    tdir = vt0/np.where(lt0 == 0, 1, lt0)[:, None]
+    vn1 = np.einsum("ij,ij->i", v1, Nw)
+    lt1 = np.linalg.norm(v1 - vn1[:, None]*Nw, axis=1)
+    width = 90.0/bins
+    incidence = np.minimum(np.degrees(np.arctan2(vn0, lt0))//width,
+                           bins - 1)
+    rebound = np.minimum(np.degrees(np.arctan2(vn1, lt1))//width, bins - 1)
+    for b, row in enumerate(mine):
+        k = incidence == b
+        tang = k & (lt0 > 0)
+        expected = {
+            "angleMin": b*width, "angleMax": (b + 1)*width,
+            "hits": np.count_nonzero(k), "ktSamples": np.count_nonzero(tang),
+            "sumVnIn": vn0[k].sum(), "sumVnOut": vn1[k].sum(),
+            "sumVtIn": lt0[tang].sum(),
+            "sumVtOut": np.einsum("ij,ij->i", v1, tdir)[tang].sum(),
+            "rebounds": np.count_nonzero(rebound == b)}
+        expected["impulseKn"] = expected["sumVnOut"]/expected["sumVnIn"] \
+            if expected["sumVnIn"] > 0 else 0
+        expected["impulseKt"] = expected["sumVtOut"]/expected["sumVtIn"] \
+            if expected["sumVtIn"] > 0 else 0
+        bad = [key for key, value in expected.items()
+               if not _close(column(row, key), value)]
+        check(not bad, "%s, bin %d [%g, %g) deg: %d hits, %d rebounds; "
+              "every column equals the parcels'%s"
+              % (wall, b, b*width, (b + 1)*width, expected["hits"],
+                 expected["rebounds"],
+                 "" if not bad else " (differ: %s)" % ", ".join(
+                     "%s %r != %r" % (key, column(row, key), expected[key])
+                     for key in bad)))
+    check(any(r["hits"] > 0 and r["rebounds"] < r["hits"] for r in mine),
+          "%s: the rebound histogram is not the incidence one" % wall)
+    for key, total in (("hits", "hits"), ("sumVnIn", "sumVnIn"),
+                       ("sumVnOut", "sumVnOut"), ("sumVtIn", "sumVtIn"),
+                       ("sumVtOut", "sumVtOut"), ("rebounds", "hits")):
+        check(_close(sum(r[key] for r in mine), column(last, wall + "_"
+                                                          + total)),
+              "%s: the bins' %s add up to the file's %s_%s"
+              % (wall, key, wall, total))
+
+
+def _close(a, b, rel=1e-8):
+    return abs(a - b) <= rel*max(abs(a), abs(b), 1e-300)
 
 
 def closed_box_case(platform, path, groups, kind="colliding", seed=1):

@@ -193,6 +193,18 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
     }
 
     stats_.addHit(pp.index(), hit, p.nParticle()*energyLoss);
+
+    if (stats_.nBins())
+    {
+        // The rebound angle from the mean wall (nw points out of the
+        // fluid); the rebound leaves the wall
+        const vector Ur(p.U() - Up);
+        const scalar vn = -(Ur & nw);
+        stats_.addAngles
+        (
+            pp.index(), hit.coefficients, atan2(vn, mag(Ur + vn*nw))
+        );
+    }
 }
 
 
@@ -300,6 +312,26 @@ void Foam::RoughWallInteraction<CloudType>::readStored()
     if (!placed)
     {
         stored = stats_;
+        return;
+    }
+
+    // The angle bins (incidenceAngleBins), stored with the totals
+    if (stats_.nBins())
+    {
+        label nBins = 0;
+        this->getModelProperty("incidenceAngleBins", nBins);
+        stringList binCounts;
+        stringList binSums;
+        this->getModelProperty("exactBinCounts", binCounts);
+        this->getModelProperty("exactBinSums", binSums);
+        if (!stored.setExactBins(nBins, binCounts, binSums, names))
+        {
+            WarningInFunction
+                << "The stored statistics hold no angle bins of "
+                << stats_.nBins() << " (incidenceAngleBins "
+                << nBins << " stored): the bins start from zero, and hold"
+                << " the hits since this restart only" << endl;
+        }
     }
 }
 
@@ -313,7 +345,7 @@ void Foam::RoughWallInteraction<CloudType>::checkCoeffsKeywords() const
     roughWallInput::checkKeywords
     (
         roughWallCompat::coeffs(*this),
-        {"patches", "writeToFile", "writePrecision"},
+        {"patches", "writeToFile", "writePrecision", "incidenceAngleBins"},
         string
         (
             typeName + "Coeffs (the settings of a patch go inside its entry"
@@ -342,8 +374,19 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
         )
     ),
     emptyComponent_(-1),
-    stats_(roughWallCompat::boundary(cloud.mesh())),
+    stats_
+    (
+        roughWallCompat::boundary(cloud.mesh()),
+        roughWallInput::readNumber<label>
+        (
+            roughWallCompat::coeffs(*this), "incidenceAngleBins",
+            {1, 900, "bins of the incidence angle over [0, 90] deg for the "
+                "statistics per angle (default: none)"},
+            0
+        )
+    ),
     file_(),
+    anglesFile_(),
     wallSpeedSqr_(stats_.nPatches(), scalar(-1)),
     wallSpeedSqrReported_(stats_.nPatches(), scalar(-1)),
     stored_(stats_),
@@ -409,6 +452,11 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
         (
             cloud.mesh(), cloud.name(), patches_, precision
         );
+        if (stats_.nBins())
+        {
+            anglesFile_ =
+                stats_.openAnglesFile(cloud.mesh(), cloud.name(), precision);
+        }
     }
 }
 
@@ -424,6 +472,7 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
     emptyComponent_(pim.emptyComponent_),
     stats_(pim.stats_),
     file_(),
+    anglesFile_(),
     wallSpeedSqr_(pim.wallSpeedSqr_),
     wallSpeedSqrReported_(pim.wallSpeedSqrReported_),
     stored_(pim.stored_),
@@ -512,6 +561,19 @@ void Foam::RoughWallInteraction<CloudType>::info(ROUGHWALL_INFO_PARAMETERS)
         this->setModelProperty("exactCounts", total.exactCounts());
         this->setModelProperty("exactSums", total.exactSums());
         this->setModelProperty("patches", total.patchNames());
+        if (total.nBins())
+        {
+            this->setModelProperty("incidenceAngleBins", total.nBins());
+            this->setModelProperty("exactBinCounts", total.exactBinCounts());
+            this->setModelProperty("exactBinSums", total.exactBinSums());
+            if (anglesFile_.valid())
+            {
+                total.writeAngles
+                (
+                    anglesFile_(), patches_, this->owner().mesh().time()
+                );
+            }
+        }
         stored_ = total;
         stats_.reset();
     }

@@ -44,13 +44,17 @@ License
 
 Foam::roughWallStatistics::roughWallStatistics
 (
-    const polyBoundaryMesh& patches
+    const polyBoundaryMesh& patches,
+    const label nBins
 )
 :
     patchNames_(patches.names()),
     nPatches_(0),
     counts_(),
-    sums_()
+    sums_(),
+    nBins_(nBins),
+    binCounts_(),
+    binSums_()
 {
     while
     (
@@ -63,7 +67,84 @@ Foam::roughWallStatistics::roughWallStatistics
     patchNames_.setSize(nPatches_);
     counts_.setSize(nPatches_*nCountTypes, int64_t(0));
     sums_.setSize(nPatches_*nSumTypes, 0);
+    binCounts_.setSize(nPatches_*nBins_*nBinCountTypes, int64_t(0));
+    binSums_.setSize(nPatches_*nBins_*nBinSumTypes, 0);
 }
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+namespace
+{
+
+//- Integers as text (v1912 writes a 64-bit integer through a 32-bit label)
+Foam::stringList integerText(const Foam::List<int64_t>& values)
+{
+    Foam::stringList text(values.size());
+    forAll(values, i)
+    {
+        text[i] = std::to_string(values[i]);
+    }
+    return text;
+}
+
+
+//- Integers from integerText's text; false if a text is not one
+bool integersFromText
+(
+    const Foam::stringList& text,
+    Foam::List<int64_t>& values
+)
+{
+    Foam::List<int64_t> read(text.size());
+    forAll(text, i)
+    {
+        char* end = nullptr;
+        errno = 0;
+        read[i] = std::strtoll(text[i].c_str(), &end, 10);
+        if (end == text[i].c_str() || *end != '\0' || errno == ERANGE)
+        {
+            return false;
+        }
+    }
+    values.transfer(read);
+    return true;
+}
+
+
+//- Numbers as text of 17 significant digits: the shortest that gives back
+//- every double
+Foam::stringList exactText(const Foam::scalarList& values)
+{
+    Foam::stringList text(values.size());
+    char buffer[32];
+    forAll(values, i)
+    {
+        std::snprintf(buffer, sizeof(buffer), "%.17g", values[i]);
+        text[i] = buffer;
+    }
+    return text;
+}
+
+
+//- Numbers from exactText's text; false if a text is not one
+bool numbersFromText(const Foam::stringList& text, Foam::scalarList& values)
+{
+    Foam::scalarList read(text.size());
+    forAll(text, i)
+    {
+        char* end = nullptr;
+        read[i] = std::strtod(text[i].c_str(), &end);
+        if (end == text[i].c_str() || *end != '\0')
+        {
+            return false;
+        }
+    }
+    values.transfer(read);
+    return true;
+}
+
+} // End anonymous namespace
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -100,6 +181,14 @@ void Foam::roughWallStatistics::operator+=(const roughWallStatistics& other)
     {
         sums_[i] += other.sums_[i];
     }
+    forAll(binCounts_, i)
+    {
+        binCounts_[i] += other.binCounts_[i];
+    }
+    forAll(binSums_, i)
+    {
+        binSums_[i] += other.binSums_[i];
+    }
 }
 
 
@@ -107,6 +196,8 @@ void Foam::roughWallStatistics::reset()
 {
     counts_ = int64_t(0);
     sums_ = Zero;
+    binCounts_ = int64_t(0);
+    binSums_ = Zero;
 }
 
 
@@ -116,6 +207,11 @@ Foam::roughWallStatistics Foam::roughWallStatistics::reduced() const
 
     roughWallCompat::sumOverProcessors(total.counts_);
     roughWallCompat::sumOverProcessors(total.sums_);
+    if (nBins_)
+    {
+        roughWallCompat::sumOverProcessors(total.binCounts_);
+        roughWallCompat::sumOverProcessors(total.binSums_);
+    }
 
     return total;
 }
@@ -255,60 +351,86 @@ Foam::roughWallStatistics::report
 
 Foam::stringList Foam::roughWallStatistics::exactCounts() const
 {
-    stringList text(counts_.size());
-    forAll(counts_, i)
-    {
-        text[i] = std::to_string(counts_[i]);
-    }
-    return text;
+    return integerText(counts_);
 }
 
 
 bool Foam::roughWallStatistics::setExactCounts(const stringList& text)
 {
-    List<int64_t> values(text.size());
-    forAll(text, i)
-    {
-        char* end = nullptr;
-        errno = 0;
-        values[i] = std::strtoll(text[i].c_str(), &end, 10);
-        if (end == text[i].c_str() || *end != '\0' || errno == ERANGE)
-        {
-            return false;
-        }
-    }
-    counts_ = values;
-    return true;
+    return integersFromText(text, counts_);
 }
 
 
 Foam::stringList Foam::roughWallStatistics::exactSums() const
 {
-    // 17 significant digits: the shortest that gives back every double
-    stringList text(sums_.size());
-    char buffer[32];
-    forAll(sums_, i)
-    {
-        std::snprintf(buffer, sizeof(buffer), "%.17g", sums_[i]);
-        text[i] = buffer;
-    }
-    return text;
+    return exactText(sums_);
 }
 
 
 bool Foam::roughWallStatistics::setExactSums(const stringList& text)
 {
-    scalarList values(text.size());
-    forAll(text, i)
+    return numbersFromText(text, sums_);
+}
+
+
+Foam::stringList Foam::roughWallStatistics::exactBinCounts() const
+{
+    return integerText(binCounts_);
+}
+
+
+Foam::stringList Foam::roughWallStatistics::exactBinSums() const
+{
+    return exactText(binSums_);
+}
+
+
+bool Foam::roughWallStatistics::setExactBins
+(
+    const label nBins,
+    const stringList& countText,
+    const stringList& sumText,
+    const wordList& names
+)
+{
+    binCounts_ = int64_t(0);
+    binSums_ = Zero;
+
+    List<int64_t> counts;
+    scalarList sums;
+    const label nStored = names.size()*nBins;
+    if
+    (
+        nBins != nBins_
+     || !integersFromText(countText, counts)
+     || !numbersFromText(sumText, sums)
+     || counts.size() != nStored*nBinCountTypes
+     || sums.size() != nStored*nBinSumTypes
+    )
     {
-        char* end = nullptr;
-        values[i] = std::strtod(text[i].c_str(), &end);
-        if (end == text[i].c_str() || *end != '\0')
+        return false;
+    }
+
+    forAll(names, storedi)
+    {
+        const label patchi =
+            std::find(patchNames_.begin(), patchNames_.end(), names[storedi])
+          - patchNames_.begin();
+        if (patchi == nPatches_)
         {
-            return false;
+            continue;
+        }
+        for (label i = 0; i < nBins_*nBinCountTypes; ++i)
+        {
+            binCounts_[patchi*nBins_*nBinCountTypes + i] =
+                counts[storedi*nBins_*nBinCountTypes + i];
+        }
+        for (label i = 0; i < nBins_*nBinSumTypes; ++i)
+        {
+            binSums_[patchi*nBins_*nBinSumTypes + i] =
+                sums[storedi*nBins_*nBinSumTypes + i];
         }
     }
-    sums_ = values;
     return true;
 }
 
@@ -361,11 +483,11 @@ bool Foam::roughWallStatistics::placeByName
 }
 
 
-Foam::autoPtr<Foam::OFstream> Foam::roughWallStatistics::openFile
+Foam::autoPtr<Foam::OFstream> Foam::roughWallStatistics::newFile
 (
     const polyMesh& mesh,
     const word& cloudName,
-    const UList<roughWallPatchSettings>& patches,
+    const word& name,
     const label precision
 )
 {
@@ -387,9 +509,29 @@ Foam::autoPtr<Foam::OFstream> Foam::roughWallStatistics::openFile
         /Time::timeName(time.startTime().value());
 
     mkDir(dir);
-    autoPtr<OFstream> filePtr(new OFstream(dir/"roughWallInteraction.dat"));
+    autoPtr<OFstream> filePtr(new OFstream(dir/name));
+    filePtr().precision(precision);
+    return filePtr;
+}
+
+
+Foam::autoPtr<Foam::OFstream> Foam::roughWallStatistics::openFile
+(
+    const polyMesh& mesh,
+    const word& cloudName,
+    const UList<roughWallPatchSettings>& patches,
+    const label precision
+)
+{
+    autoPtr<OFstream> filePtr
+    (
+        newFile(mesh, cloudName, "roughWallInteraction.dat", precision)
+    );
+    if (!filePtr.valid())
+    {
+        return filePtr;
+    }
     OFstream& os = filePtr();
-    os.precision(precision);
 
     os  << "# Particle patch interaction" << nl
         << "# Model : roughWallInteraction" << nl
@@ -414,6 +556,79 @@ Foam::autoPtr<Foam::OFstream> Foam::roughWallStatistics::openFile
     os  << endl;
 
     return filePtr;
+}
+
+
+Foam::autoPtr<Foam::OFstream> Foam::roughWallStatistics::openAnglesFile
+(
+    const polyMesh& mesh,
+    const word& cloudName,
+    const label precision
+) const
+{
+    autoPtr<OFstream> filePtr
+    (
+        newFile(mesh, cloudName, "roughWallInteractionAngles.dat", precision)
+    );
+    if (!filePtr.valid())
+    {
+        return filePtr;
+    }
+    OFstream& os = filePtr();
+
+    os  << "# Rough-wall hits per bin of the incidence angle and histogram"
+        << " of the rebound angle (angles from the mean wall) [deg]" << nl
+        << "# Model : roughWallInteraction" << nl
+        << "# Bins : " << nBins_ << nl
+        << "# Time" << tab << "patch" << tab << "bin" << tab << "angleMin"
+        << tab << "angleMax" << tab << "hits" << tab << "ktSamples" << tab
+        << "sumVnIn" << tab << "sumVnOut" << tab << "sumVtIn" << tab
+        << "sumVtOut" << tab << "impulseKn" << tab << "impulseKt" << tab
+        << "rebounds" << endl;
+
+    return filePtr;
+}
+
+
+void Foam::roughWallStatistics::writeAngles
+(
+    OFstream& file,
+    const UList<roughWallPatchSettings>& patches,
+    const Time& time
+) const
+{
+    typedef roughWallPatchSettings::interactionType interactionType;
+
+    const word timeName(Time::timeName(time.value()));
+    for (label patchi = 0; patchi < nPatches_; ++patchi)
+    {
+        if (patches[patchi].type() != interactionType::rough)
+        {
+            continue;
+        }
+        for (label bini = 0; bini < nBins_; ++bini)
+        {
+            auto n = [&](const binCountType c)
+            {
+                // (as text: v1912 writes an int64_t as a label)
+                return std::to_string(binCount(patchi, bini, c));
+            };
+            auto s = [&](const binSumType t)
+            {
+                return binSum(patchi, bini, t);
+            };
+            file<< timeName << tab << patchNames_[patchi] << tab << bini
+                << tab << 90.0*bini/nBins_ << tab << 90.0*(bini + 1)/nBins_
+                << tab << n(BIN_HITS).c_str()
+                << tab << n(BIN_KT_SAMPLES).c_str()
+                << tab << s(BIN_VN_IN) << tab << s(BIN_VN_OUT)
+                << tab << s(BIN_VT_IN) << tab << s(BIN_VT_OUT)
+                << tab << ratio(s(BIN_VN_OUT), s(BIN_VN_IN))
+                << tab << ratio(s(BIN_VT_OUT), s(BIN_VT_IN))
+                << tab << n(BIN_REBOUNDS).c_str() << nl;
+        }
+    }
+    file.flush();
 }
 
 

@@ -57,6 +57,7 @@ Usage: postProcess.py OUT_DIR CASE_DIR [CASE_DIR ...]
 import csv
 import os
 import re
+import subprocess
 import sys
 
 import numpy as np
@@ -71,6 +72,10 @@ import matplotlib.pyplot as plt
 N_BINS = 25
 N_GROUPS = 20
 N_BLOCKS = 10           # time blocks of the wall statistics' jackknife
+MODEL_SAMPLES = 20000   # roughWallStats' Monte Carlo samples per angle
+#: The columns of the angle file summed over the walls
+ANGLE_COLUMNS = ("hits", "ktSamples", "sumVnIn", "sumVnOut", "sumVtIn",
+                 "sumVtOut", "rebounds")
 QUANTILES = (0.01, 0.1, 0.5, 0.9, 0.99)
 # Documented ranges of the rotational-lift coefficients (docs/spin.md)
 OESTERLE_RANGE = {"Rep": (10, 140), "Gamma": (1, 6)}
@@ -161,6 +166,26 @@ def window_model_statistics(stats, t0, t1):
     return out
 
 
+def read_angle_bins(case):
+    """The angle file of the model (incidenceAngleBins; running totals at
+    every write time, per wall and bin) summed over the walls: a dict of
+    arrays [write time, bin] and Time, or None (no angle file)."""
+    try:
+        _, rows = fc.read_statistics(case, tc.CLOUD, fc.ANGLE_STATISTICS)
+    except fc.FoamError:
+        return None
+    times = sorted({r["Time"] for r in rows})
+    row_of = {t: i for i, t in enumerate(times)}
+    n_bins = int(max(r["bin"] for r in rows)) + 1
+    out = {c: np.zeros((len(times), n_bins)) for c in ANGLE_COLUMNS}
+    for r in rows:
+        if r["patch"] in WALLS:
+            for c in ANGLE_COLUMNS:
+                out[c][row_of[r["Time"]], int(r["bin"])] += r[c]
+    out["Time"] = np.array(times)
+    return out
+
+
 # ----------------------------------------------------------------------------
 # Statistics
 
@@ -180,6 +205,83 @@ def jackknife(stat, sums):
         se = np.sqrt((g - 1)/g*np.sum(centred**2, axis=0))
     se = np.where(np.isfinite(value), se, np.nan)
     return value, se
+
+
+def angle_bins(case, info, bt):
+    """Per bin of the incidence angle (both walls): the impulse-weighted
+    k_n = sum v''_n/sum |v'_n| and k_t = sum v''_t/sum |v'_t|, the
+    fractions of the hits by incidence angle and by rebound angle, each
+    with its block-jackknife error over the time blocks ending at the
+    times bt; and the model's values at the run's Delta, e, mu0, muD
+    (model_bins).  None without an angle file."""
+    a = read_angle_bins(case)
+    if a is None:
+        return None
+    idx = np.searchsorted(a["Time"], bt + EPS_TIME) - 1
+    blocks = {}
+    for c in ANGLE_COLUMNS:
+        running = np.vstack([np.zeros((1, a[c].shape[1])), a[c]])
+        blocks[c] = np.diff(running[idx + 1], axis=0)
+
+    def ratio(num, den):
+        return lambda t: np.where(t[den] > 0, t[num]/np.where(t[den] > 0, t[den], 1),
+                                  np.nan)
+
+    out = {}
+    for key, fun in (("kn", ratio("sumVnOut", "sumVnIn")),
+                     ("kt", ratio("sumVtOut", "sumVtIn")),
+                     ("hitFraction", lambda t: t["hits"]/t["hits"].sum()),
+                     ("reboundFraction", lambda t: t["rebounds"]/t["rebounds"].sum())):
+        out[key], out[key + "_se"] = jackknife(fun, blocks)
+    out["hits"] = blocks["hits"].sum(axis=0)
+    n_bins = len(out["hits"])
+    out["angleMin"] = 90.0*np.arange(n_bins)/n_bins
+    out["angleMax"] = 90.0*np.arange(1, n_bins + 1)/n_bins
+    out.update(model_bins(info, n_bins))
+    return out
+
+
+def model_curve(info, alphas):
+    """Mean k_n and k_t of the rough-wall model at the incidence angles
+    alphas [deg] (no incident spin), at the run's Delta, e, mu0, muD,
+    lateral tilt: roughWallStats' Monte Carlo of the full operator
+    (--recollide, as the OpenFOAM model: new facets until the particle
+    leaves).  A dict of arrays, or None (no roughWallStats, or no
+    roughnessAngle)."""
+    stats = os.path.join(os.environ.get("ROUGHWALL_ROOT", ""), "bin", "roughWallStats")
+    if not os.path.exists(stats) or not info.get("roughnessAngle"):
+        return None
+    cmd = [stats, "--Delta", str(info["roughnessAngle"]), "--e", str(info["e"]),
+           "--mu0", str(info.get("mu0", info["muD"])), "--mud", str(info["muD"]),
+           "--alpha", ",".join("%g" % x for x in alphas), "--method", "montecarlo",
+           "--recollide", "--samples", str(MODEL_SAMPLES), "--threads", "1",
+           "--digits", "8"]
+    if str(info.get("lateralTilt")) in ("on", "true", "yes"):
+        cmd.append("--lateral")
+    out = subprocess.run(cmd, stdout=subprocess.PIPE, check=True, text=True).stdout
+    rows = list(csv.DictReader(out.splitlines()))
+    return {k: np.array([float(r[k]) for r in rows])
+            for k in ("alpha_deg", "mean_kn", "mean_kt", "se_mean_kn", "se_mean_kt")}
+
+
+def model_bins(info, n_bins):
+    """The model's impulse-weighted k_n, k_t per bin: its mean k_n(alpha),
+    k_t(alpha) on a 0.25 deg grid, averaged over the bin with the weight
+    sin(alpha) (|v'_n| at one incident speed, alpha uniform in the bin:
+    the run's own distribution within a bin is not in the file), and the
+    curve itself (model_alpha, model_kn, model_kt) for the figure."""
+    alphas = np.arange(0.125, 90, 0.25)
+    curve = model_curve(info, alphas)
+    if curve is None:
+        return {}
+    w = np.sin(np.radians(alphas))
+    b = np.minimum((alphas/(90.0/n_bins)).astype(int), n_bins - 1)
+    out = {"model_alpha": alphas, "model_kn": curve["mean_kn"], "model_kt": curve["mean_kt"]}
+    for key in ("kn", "kt"):
+        out["model_bin_" + key] = np.array([
+            np.sum(w[b == i]*curve["mean_" + key][b == i])/np.sum(w[b == i])
+            for i in range(n_bins)])
+    return out
 
 
 def air_profile(case, time="0"):
@@ -500,6 +602,7 @@ def analyse(case):
             ("impactFrequency_lowerWall", lambda t: t["imp_lowerWall"]/t["dist"]),
             ("impactFrequency_upperWall", lambda t: t["imp_upperWall"]/t["dist"])):
         summary[name], summary[name + "_se"] = (float(v) for v in jackknife(fun, blocks))
+    summary["angleBins"] = angle_bins(case, info, bt)
     if "lowerWall_sumVnIn" in blocks:
         def impulse(out, inc, walls=WALLS):
             def f(t):
@@ -607,6 +710,65 @@ def write_summary(path, results):
         w.writerow(SUMMARY_COLUMNS)
         for _, _, s, _ in results:
             w.writerow([fmt(s.get(c)) for c in SUMMARY_COLUMNS])
+
+
+ANGLE_CSV_COLUMNS = ["angleMin", "angleMax", "hits", "hitFraction", "hitFraction_se",
+                     "reboundFraction", "reboundFraction_se", "kn", "kn_se",
+                     "model_bin_kn", "kt", "kt_se", "model_bin_kt"]
+
+
+def write_angles(path, results):
+    """angles.csv: the binned wall statistics of every variant with an
+    angle file, beside the model's values (model_bin_*)."""
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["variant", "bin"] + ANGLE_CSV_COLUMNS)
+        for info, _, s, _ in results:
+            a = s.get("angleBins")
+            if not a:
+                continue
+            for i in range(len(a["hits"])):
+                w.writerow([info["variant"], i]
+                           + [fmt(float(a[c][i])) if c in a else ""
+                              for c in ANGLE_CSV_COLUMNS])
+
+
+def plot_angles(path, result, d):
+    """k_n(alpha), k_t(alpha) of the run per bin of the incidence angle
+    (+-1 s.e.) with the model's curves (the paper's figure 2 made from the
+    run), and the distributions of the incidence and rebound angles."""
+    info, _, s, _ = result
+    a = s["angleBins"]
+    mid = 0.5*(a["angleMin"] + a["angleMax"])
+    half = 0.5*(a["angleMax"] - a["angleMin"])
+    fig, ax = plt.subplots(1, 3, figsize=(13, 4))
+    for k, (key, name) in enumerate((("kn", "$k_n$"), ("kt", "$k_t$"))):
+        ok = np.isfinite(a[key])
+        ax[k].errorbar(mid[ok], a[key][ok], xerr=half[ok], yerr=a[key + "_se"][ok],
+                       fmt="o", ms=4, capsize=2, label="OpenFOAM run (impulse-weighted, per bin)")
+        if "model_alpha" in a:
+            ax[k].plot(a["model_alpha"], a["model_" + key], "-", lw=1,
+                       label="model, no incident spin (roughWallStats)")
+            ax[k].plot(mid, a["model_bin_" + key], "x", ms=6,
+                       label="model, bin average")
+        ax[k].set_xlabel("incidence angle $\\alpha$ [deg]")
+        ax[k].set_ylabel(name)
+        ax[k].set_xlim(0, 90)
+    ax[0].set_yscale("log")
+    ax[0].legend(fontsize=7)
+    width = a["angleMax"] - a["angleMin"]
+    for key, name, m in (("hitFraction", "incidence", "o"), ("reboundFraction", "rebound", "s")):
+        ax[2].errorbar(mid, a[key]/width, yerr=a[key + "_se"]/width, fmt=m + "-", ms=4,
+                       capsize=2, label=name)
+    ax[2].set_xlabel("angle from the mean wall [deg]")
+    ax[2].set_ylabel("fraction of the hits per degree")
+    ax[2].set_xlim(0, 90)
+    ax[2].legend(fontsize=8)
+    fig.suptitle("%s: %s, Delta = %s deg" % (title(d), info["variant"], info.get("roughnessAngle")),
+                 fontsize=9)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
 
 
 def label(info):
@@ -910,6 +1072,7 @@ def main():
     d = diameters[0]
     write_profiles(os.path.join(out, "profiles.csv"), results)
     write_summary(os.path.join(out, "summary.csv"), results)
+    write_angles(os.path.join(out, "angles.csv"), results)
     # The figures of the frozen-air variants, and loading.png of the
     # loading variants beside the default
     frozen = [x for x in results if not is_loading(x[0])]
@@ -921,6 +1084,9 @@ def main():
         plot_wall_hits(os.path.join(out, "wallHits.png"), frozen, d)
         plot_spin_up(os.path.join(out, "spinUp.png"), frozen, d)
         plot_spin_ratios(os.path.join(out, "spinRatios.png"), frozen, d)
+        binned = [x for x in frozen if x[2].get("angleBins")]
+        if binned:
+            plot_angles(os.path.join(out, "wallAngles.png"), binned[0], d)
     if loading:
         plot_loading(os.path.join(out, "loading.png"), loading, d, frozen[:1])
     write_spin_ratios(os.path.join(out, "spinRatios.csv"), results)
