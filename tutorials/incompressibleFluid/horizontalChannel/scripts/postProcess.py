@@ -655,7 +655,7 @@ PROFILE_COLUMNS = ["y_over_H", "concentration", "concentration_se",
 
 SUMMARY_COLUMNS = [
     "variant", "geometry", "wallModel", "roughness", "roughnessAngle", "lateralTilt", "e",
-    "muD", "lift", "torque", "shearLift", "dispersion",
+    "mu0", "muD", "lift", "torque", "shearLift", "dispersion",
     "diameter", "nParcels", "deltaT",
     "sampleStart", "sampleEnd", "snapshots", "samples",
     "upperFraction", "upperFraction_se", "upperFractionEarly", "upperFractionEarly_se",

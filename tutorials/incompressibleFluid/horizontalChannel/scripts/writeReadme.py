@@ -67,6 +67,9 @@ class Results:
         self.info = read_info(os.path.join(directory, "runInfo"))
         self.ratios = {r["variant"]: r for r in
                        read_rows(os.path.join(directory, "spinRatios.csv"))}
+        self.angles = {}
+        for row in read_rows(os.path.join(directory, "angles.csv")):
+            self.angles.setdefault(row["variant"], []).append(row)
         self.smoke = {}
         for version in ("14", "13"):
             path = os.path.join(directory, "smokeTest-openfoam%s.csv" % version)
@@ -388,6 +391,33 @@ def wall_statistics(r):
         "hits and does not converge like a mean. `-`: no hits on that wall.)")
 
 
+def wall_angles(r):
+    """k_n, k_t per bin of the incidence angle of the default variant
+    against the model's bin averages, and the angle distributions."""
+    rows = []
+    for a in r.angles[DEFAULT]:
+        n = lambda k: number(a, k)
+        rows.append(["%g-%g" % (n("angleMin"), n("angleMax")),
+                     pm(n("hitFraction"), n("hitFraction_se"), "%.2f", 100),
+                     pm(n("reboundFraction"), n("reboundFraction_se"), "%.2f", 100),
+                     pm(n("kn"), n("kn_se")), num(n("model_bin_kn")),
+                     num(z(n("kn"), n("kn_se"), n("model_bin_kn"), 0), "%.1f"),
+                     pm(n("kt"), n("kt_se")), num(n("model_bin_kt")),
+                     num(z(n("kt"), n("kt_se"), n("model_bin_kt"), 0), "%.1f")])
+    return table(["incidence angle [deg]", "hits in the bin [%]",
+                  "rebounds at these angles [%]", "k_n run", "k_n model",
+                  "difference / s.e.", "k_t run", "k_t model", "difference / s.e."],
+                 rows) + (
+        "\n\n(`%s`, both walls, sampling window; results/angles.csv. Run: the "
+        "impulse-weighted ratios of the bin, +- the jackknife over 10 time blocks. "
+        "Model: roughWallStats' Monte Carlo of the full operator (new facets until "
+        "the bead leaves) at Delta = %s deg, e = %s, mu0 = %s, muD = %s, with "
+        "sideways tilt, no incident spin, 20000 samples per 0.25 deg, averaged "
+        "over the bin with the weight sin(alpha).)"
+        % (DEFAULT, r.summary[DEFAULT]["roughnessAngle"], r.summary[DEFAULT]["e"],
+           r.summary[DEFAULT]["mu0"], r.summary[DEFAULT]["muD"]))
+
+
 def spin_up(r):
     """First against second half of the sampling window, every variant"""
     rows, worst, worst_rough = [], 0.0, 0.0
@@ -665,6 +695,7 @@ BLOCKS = {
     "spinRatios": spin_ratios,
     "forceRanges": force_ranges,
     "wallStatistics": wall_statistics,
+    "wallAngles": wall_angles,
     "spinUp": spin_up,
     "timeStep": time_step,
     "runtimes": runtimes,
