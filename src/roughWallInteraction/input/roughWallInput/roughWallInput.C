@@ -28,7 +28,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "roughWallInput.H"
-#include "Switch.H"
 #include "OStringStream.H"
 #include "foamCompat.H"
 
@@ -108,7 +107,8 @@ void Foam::roughWallInput::fatalBadEntry
     FatalIOErrorInFunction(dict)
         << "Bad entry for keyword '" << keyword.c_str() << "' in dictionary "
         << dict.name().c_str() << nl
-        << "    found:   " << found.c_str() << nl
+        << "    found:   "
+        << (found.empty() ? entryText(dict, keyword) : found).c_str() << nl
         << "    allowed: " << allowed.c_str() << nl
         << "    meaning: " << meaning << nl
         << exit(FatalIOError);
@@ -156,11 +156,7 @@ void Foam::roughWallInput::checkKeywords
         {
             allowed << " (closest: " << used[closest].c_str() << ")";
         }
-        fatalBadEntry
-        (
-            dict, key, allowed.str(), "not a keyword here",
-            "'" + entryText(dict, key) + "'"
-        );
+        fatalBadEntry(dict, key, allowed.str(), "not a keyword here");
     }
 }
 
@@ -174,7 +170,7 @@ Foam::string Foam::roughWallInput::entryText
     const entry* eptr = roughWallCompat::findLiteral(dict, keyword);
     if (!eptr || eptr->isDict())
     {
-        return eptr ? "{ ... }" : "";
+        return eptr ? "a dictionary" : "missing";
     }
     OStringStream os;
     const ITstream& is = eptr->stream();
@@ -182,26 +178,9 @@ Foam::string Foam::roughWallInput::entryText
     {
         os  << (toki ? " " : "") << is[toki];
     }
-    return os.str();
+    return "'" + os.str() + "'";
 }
 
-
-bool Foam::roughWallInput::readSwitch
-(
-    const dictionary& dict,
-    const word& keyword,
-    const char* meaning,
-    const std::optional<bool>& deflt
-)
-{
-    return
-        deflt && !roughWallCompat::findLiteral(dict, keyword)
-      ? *deflt
-      : bool
-        (
-            read<Switch>(dict, keyword, "true/false, on/off, yes/no", meaning)
-        );
-}
 
 
 // ************************************************************************* //

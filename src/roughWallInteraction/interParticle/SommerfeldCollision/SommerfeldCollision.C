@@ -93,8 +93,7 @@ void Foam::SommerfeldCollision<CloudType>::readSettings(const dictionary& dict)
             (
                 dict, "sizeClassBounds",
                 "a list of ascending positive diameters [m], e.g. (1e-4 2e-4)",
-                "inner bounds of the size classes",
-                "'" + roughWallInput::entryText(dict, "sizeClassBounds") + "'"
+                "inner bounds of the size classes"
             );
         }
     }

@@ -19,15 +19,9 @@ namespace
 {
 
 //- The coefficients' keywords, places among the constants and meanings
+using M = roughWall::FacetMaterial;
 const char* const names[3] = {"e", "mu0", "muD"};
-
-double roughWall::FacetMaterial::* const members[3] =
-{
-    &roughWall::FacetMaterial::e,
-    &roughWall::FacetMaterial::mu0,
-    &roughWall::FacetMaterial::muD
-};
-
+double M::* const members[3] = {&M::e, &M::mu0, &M::muD};
 const char* const meanings[3] =
 {
     "normal restitution coefficient of a facet collision",
@@ -60,8 +54,9 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
     // muD's range is [0, mu0] for a constant mu0 (sliding friction above
     // the static one could reverse the slip), its default mu0.  Tables:
     // the bounds at their nodes (linear in between, constant beyond the
-    // ends); any other function (a spline table too): at every call
-    std::vector<double> nodes[3];
+    // ends); any other function (a spline table too): at every call.  A
+    // constant's nodes: one argument
+    std::vector<double> nodes[3] = {{45}, {45}, {45}};
     for (label i = 0; i < 3; ++i)
     {
         const word keyword(names[i]);
@@ -92,28 +87,17 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
             roughWallInput::fatalBadEntry
             (
                 dict, keyword, allowed, r.meaning,
-                e ? "'" + roughWallInput::entryText(dict, keyword) + "'" + why
-                  : string("missing")
+                roughWallInput::entryText(dict, keyword) + why
             );
         };
 
         autoPtr<Function1<scalar>>& f = functions_[i];
+        const auto newF =
+            [&]() { f = roughWallCompat::newScalarFunction1(keyword, dict); };
         string why;
-        if
-        (
-            !e
-         || !roughWallCompat::readWhole
-            (
-                *e,
-                [&]()
-                {
-                    f = roughWallCompat::newScalarFunction1(keyword, dict);
-                },
-                why
-            )
-        )
+        if (!e || !roughWallCompat::readWhole(*e, newF, why))
         {
-            fatal(" (" + why + ")");
+            fatal(e ? " (" + why + ")" : "");
         }
 
         tmp<scalarField> x;
@@ -141,32 +125,23 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
         }
     }
 
-    if (roughWallCompat::findLiteral(dict, "eArgument"))
+    const bool eArgumentGiven = roughWallCompat::findLiteral(dict, "eArgument");
+    if (eArgumentGiven && !functions_[0].valid())
     {
-        if (!functions_[0].valid())
-        {
-            roughWallInput::fatalBadEntry
-            (
-                dict, "eArgument", "only with e as a Function1",
-                eArgumentMeaning, "e is the constant " + name(constants_.e)
-            );
-        }
-        eArgument_ = roughWallInput::readEnum
+        roughWallInput::fatalBadEntry
         (
-            dict, "eArgument", argumentNames, eArgumentMeaning
+            dict, "eArgument", "only with e as a Function1",
+            eArgumentMeaning, "e is the constant " + name(constants_.e)
         );
     }
+    eArgument_ = roughWallInput::readEnum
+    (
+        dict, "eArgument", argumentNames, eArgumentMeaning, eArgument_
+    );
 
     if (!dependsOnImpact() || checkPerCall_)
     {
         return;
-    }
-    for (std::vector<double>& n : nodes)
-    {
-        if (n.empty())
-        {
-            n.push_back(45);   // a constant: one argument
-        }
     }
     try
     {

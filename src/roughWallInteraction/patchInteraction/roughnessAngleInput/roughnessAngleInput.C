@@ -68,23 +68,15 @@ const char* const traceMeaning =
     "given by a line '# units XU ZU'), x strictly increasing; path "
     "absolute or relative to the case";
 
-//- The parameters' keywords, their meanings and places
-const char* const parameterNames[4] = {"Ra", "Rq", "Rz", "RSm"};
-
-const char* const parameterMeanings[4] =
+//- The parameters: keyword, place and meaning
+using P = roughWall::ProfileRoughness;
+const struct { const char* name; double P::* value; const char* meaning; }
+parameters[4] =
 {
-    "arithmetic mean height of the profile [m]",
-    "root-mean-square height of the profile [m]",
-    "maximum height (peak to valley) of the profile [m]",
-    "mean width of the profile elements [m]"
-};
-
-double roughWall::ProfileRoughness::* const parameters[4] =
-{
-    &roughWall::ProfileRoughness::Ra,
-    &roughWall::ProfileRoughness::Rq,
-    &roughWall::ProfileRoughness::Rz,
-    &roughWall::ProfileRoughness::RSm
+    {"Ra", &P::Ra, "arithmetic mean height of the profile [m]"},
+    {"Rq", &P::Rq, "root-mean-square height of the profile [m]"},
+    {"Rz", &P::Rz, "maximum height (peak to valley) of the profile [m]"},
+    {"RSm", &P::RSm, "mean width of the profile elements [m]"}
 };
 
 
@@ -123,11 +115,7 @@ roughWall::RoughnessAngle made
         roughWallInput::fatalBadEntry
         (
             dict, key, err.allowed, meaning,
-            (
-                roughWallCompat::findLiteral(dict, key)
-              ? "'" + roughWallInput::entryText(dict, key) + "'"
-              : string("missing")
-            )
+            roughWallInput::entryText(dict, key)
           + (wrong.empty() ? "" : " (" + wrong + ")")
         );
     }
@@ -179,8 +167,7 @@ roughWall::RoughnessAngle readProfile(const dictionary& dict)
         (
             dict, "roughness",
             "a dictionary { profile \"<file>\"; } or { Ra ...; RSm ...; }",
-            profileMeaning,
-            "'" + roughWallInput::entryText(dict, "roughness") + "'"
+            profileMeaning
         );
     }
 
@@ -198,21 +185,12 @@ roughWall::RoughnessAngle readProfile(const dictionary& dict)
     // A measured trace: the wall itself, nothing else beside it
     if (roughWallCompat::findLiteral(rDict, "profile"))
     {
-        for (label i = 1; i < names.size(); ++i)
-        {
-            if (roughWallCompat::findLiteral(rDict, names[i]))
-            {
-                roughWallInput::fatalBadEntry
-                (
-                    rDict, names[i],
-                    "no other keyword beside profile (the trace gives the "
-                    "wall): either profile or the parameters Ra/Rq/Rz, RSm",
-                    profileMeaning,
-                    "'" + roughWallInput::entryText(rDict, names[i]) + "'"
-                );
-            }
-        }
-
+        roughWallInput::checkKeywords
+        (
+            rDict, {"profile"},
+            "roughness with a profile (the trace gives the wall: no "
+            "parameter Ra/Rq/Rz, RSm or estimate beside it)"
+        );
         const string allowed(roughWall::profileFileAllowed());
         const fileName given = roughWallInput::read<fileName>
         (
@@ -246,15 +224,12 @@ roughWall::RoughnessAngle readProfile(const dictionary& dict)
     bool given[4];
     for (label i = 0; i < 4; ++i)
     {
-        given[i] = roughWallCompat::findLiteral(rDict, parameterNames[i]);
-        p.*parameters[i] =
-            given[i]
-          ? roughWallInput::readNumber<scalar>
-            (
-                rDict, parameterNames[i],
-                {-GREAT, GREAT, parameterMeanings[i]}
-            )
-          : 0;
+        given[i] = roughWallCompat::findLiteral(rDict, parameters[i].name);
+        p.*parameters[i].value = roughWallInput::readNumber<scalar>
+        (
+            rDict, parameters[i].name,
+            {-GREAT, GREAT, parameters[i].meaning}, scalar(0)
+        );
     }
     const bool closedForm = roughWallInput::readEnum
     (
