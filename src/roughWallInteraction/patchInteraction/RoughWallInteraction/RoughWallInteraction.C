@@ -196,14 +196,7 @@ void Foam::RoughWallInteraction<CloudType>::roughRebound
 
     if (stats_.nBins())
     {
-        // The rebound angle from the mean wall (nw points out of the
-        // fluid); the rebound leaves the wall
-        const vector Ur(p.U() - Up);
-        const scalar vn = -(Ur & nw);
-        stats_.addAngles
-        (
-            pp.index(), hit.coefficients, atan2(vn, mag(Ur + vn*nw))
-        );
+        stats_.addAngles(pp.index(), hit.coefficients, p.U() - Up, nw);
     }
 }
 

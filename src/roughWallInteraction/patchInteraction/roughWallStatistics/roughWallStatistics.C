@@ -171,6 +171,39 @@ void Foam::roughWallStatistics::addStick
 }
 
 
+void Foam::roughWallStatistics::addAngles
+(
+    const label patchi,
+    const roughWall::WallHitCoefficients& k,
+    const vector& Ur,
+    const vector& nw
+)
+{
+    const label first = patchi*nBins_;
+    const label bini = first + angleBin(std::atan2(k.vnIn, k.vtIn));
+    int64_t* c = &binCounts_[bini*nBinCountTypes];
+    scalar* s = &binSums_[bini*nBinSumTypes];
+
+    ++c[BIN_HITS];
+    s[BIN_VN_IN] += k.vnIn;
+    s[BIN_VN_OUT] += k.vnOut;
+    if (k.hasKt)
+    {
+        ++c[BIN_KT_SAMPLES];
+        s[BIN_VT_IN] += k.vtIn;
+        s[BIN_VT_OUT] += k.vtOut;
+    }
+
+    // The rebound angle from the mean wall; the rebound leaves the wall
+    const scalar vn = -(Ur & nw);
+    const scalar reboundAngle = std::atan2(vn, mag(Ur + vn*nw));
+    ++binCounts_
+    [
+        (first + angleBin(reboundAngle))*nBinCountTypes + BIN_REBOUNDS
+    ];
+}
+
+
 void Foam::roughWallStatistics::operator+=(const roughWallStatistics& other)
 {
     forAll(counts_, i)
