@@ -65,21 +65,13 @@ std::size_t editDistance(const std::string& a, const std::string& b)
 }
 
 
-//- Format a bound: integers without a decimal point, "inf" and "-inf" for
+//- A bound as text: OpenFOAM's form of the number, "inf" and "-inf" for
 //- no bound
 Foam::string boundText(const Foam::scalar x)
 {
-    if (x >= Foam::GREAT)
-    {
-        return "inf";
-    }
-    if (x <= -Foam::GREAT)
-    {
-        return "-inf";
-    }
-    Foam::OStringStream os;
-    os  << x;
-    return os.str();
+    return
+        x >= Foam::GREAT ? "inf" : x <= -Foam::GREAT ? "-inf"
+      : Foam::string(Foam::name(x));
 }
 
 } // End anonymous namespace
@@ -134,27 +126,23 @@ void Foam::roughWallInput::checkKeywords
         }
 
         // The closest used keyword, for the message
-        label closest = -1;
-        std::size_t closestDistance = 0;
-        forAll(used, i)
-        {
-            const std::size_t d = editDistance(key, used[i]);
-            if (closest == -1 || d < closestDistance)
+        const auto closest = std::min_element
+        (
+            used.begin(), used.end(),
+            [&](const word& a, const word& b)
             {
-                closest = i;
-                closestDistance = d;
+                return editDistance(key, a) < editDistance(key, b);
             }
-        }
-
+        );
         OStringStream allowed;
         allowed << "the keywords of " << where.c_str() << ":";
         for (const word& w : used)
         {
             allowed << " " << w.c_str();
         }
-        if (closest >= 0)
+        if (closest != used.end())
         {
-            allowed << " (closest: " << used[closest].c_str() << ")";
+            allowed << " (closest: " << closest->c_str() << ")";
         }
         fatalBadEntry(dict, key, allowed.str(), "not a keyword here");
     }

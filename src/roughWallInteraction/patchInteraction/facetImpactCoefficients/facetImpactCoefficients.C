@@ -18,10 +18,10 @@ ROUGHWALL_NAMED_ENUM
 namespace
 {
 
-//- The coefficients' keywords, places among the constants and meanings
-using M = roughWall::FacetMaterial;
+using roughWall::ImpactArgument;
+
 const char* const names[3] = {"e", "mu0", "muD"};
-double M::* const members[3] = {&M::e, &M::mu0, &M::muD};
+
 const char* const meanings[3] =
 {
     "normal restitution coefficient of a facet collision",
@@ -45,75 +45,71 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
     const word& patchName
 )
 :
-    patchName_(patchName),
-    eArgument_(roughWall::ImpactArgument::angle),
-    checkPerCall_(false)
+    policy_
+    {
+        {nullptr, 0}, {nullptr, 0}, {nullptr, 0},
+        roughWall::ImpactArgument::angle, false
+    }
 {
     // Each coefficient a Function1 (OpenFOAM's reader, its stops caught,
-    // every token used); a constant kept as its number, in its range.
-    // muD's range is [0, mu0] for a constant mu0 (sliding friction above
-    // the static one could reverse the slip), its default mu0.  Tables:
-    // the bounds at their nodes (linear in between, constant beyond the
-    // ends); any other function (a spline table too): at every call.  A
-    // constant's nodes: one argument
+    // every token used); a constant kept as its number, in its range:
+    // e in [0, 1], mu0 >= 0, muD in [0, mu0] for a constant mu0 (sliding
+    // friction above the static one could reverse the slip), muD's default
+    // mu0.  Linear tables: the bounds checked at their nodes here; any other
+    // function (a spline table too): at every call.  A constant: one node
+    coefficient* c[3] = {&policy_.e, &policy_.mu0, &policy_.muD};
     std::vector<double> nodes[3] = {{45}, {45}, {45}};
     for (label i = 0; i < 3; ++i)
     {
-        const word keyword(names[i]);
-        const entry* e = roughWallCompat::findLiteral(dict, keyword);
+        const entry* e = roughWallCompat::findLiteral(dict, names[i]);
         if (i == 2 && !e)
         {
-            constants_.muD = constants_.mu0;
-            if (functions_[1].valid())
-            {
-                functions_[2].reset(functions_[1]->clone().ptr());
-            }
+            policy_.muD = policy_.mu0;
             nodes[2] = nodes[1];
             break;
         }
         const roughWallInput::range r
         {
-            0,
-            i == 0 ? 1 : i == 2 && !functions_[1].valid()
-          ? constants_.mu0 : GREAT,
+            0, i == 0 ? 1 : i == 2 && !c[1]->function ? c[1]->constant : GREAT,
             meanings[i]
         };
         const string allowed =
             r.allowed() + ", or an OpenFOAM Function1 of the facet impact, "
             "e.g. table ((0 0.95) (90 0.75)), with values in that range and "
             "nothing after it";
-        const auto fatal = [&](const string& why)
+
+        autoPtr<Function1<scalar>>& f = functions_[i];
+        const string why = e ? roughWallCompat::readWhole(*e, [&]()
+        {
+            f = roughWallCompat::newScalarFunction1(names[i], dict);
+        }) : "";
+        if (!e || !why.empty())
         {
             roughWallInput::fatalBadEntry
             (
-                dict, keyword, allowed, r.meaning,
-                roughWallInput::entryText(dict, keyword) + why
+                dict, names[i], allowed, r.meaning,
+                e ? roughWallInput::entryText(dict, names[i]) + " (" + why + ")"
+                  : string()
             );
-        };
-
-        autoPtr<Function1<scalar>>& f = functions_[i];
-        const auto newF =
-            [&]() { f = roughWallCompat::newScalarFunction1(keyword, dict); };
-        string why;
-        if (!e || !roughWallCompat::readWhole(*e, newF, why))
-        {
-            fatal(e ? " (" + why + ")" : "");
         }
 
+        // Its settings: its own sub-dictionary, or the entry's dictionary
+        // (ESI's inline table)
         tmp<scalarField> x;
         if (f->type() == "constant")
         {
-            const scalar c = constants_.*members[i] = f->value(0);
+            c[i]->constant = f->value(0);
             f.clear();
-            if (!(c >= r.min && c <= r.max))
+            if (!(c[i]->constant >= r.min && c[i]->constant <= r.max))
             {
-                fatal("");
+                roughWallInput::fatalBadEntry
+                (
+                    dict, names[i], allowed, r.meaning
+                );
             }
         }
         else if
         (
-            // Its settings: its own sub-dictionary, or the entry (ESI's
-            // inline table)
             roughWallCompat::tableNodes(f(), e->isDict() ? e->dict() : dict, x)
         )
         {
@@ -121,25 +117,27 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
         }
         else
         {
-            checkPerCall_ = true;
+            policy_.checked = true;
         }
+        c[i]->function = f.valid() ? &f() : nullptr;
     }
 
-    const bool eArgumentGiven = roughWallCompat::findLiteral(dict, "eArgument");
-    if (eArgumentGiven && !functions_[0].valid())
+    const bool eArgument = roughWallCompat::findLiteral(dict, "eArgument");
+    if (eArgument && !policy_.e.function)
     {
         roughWallInput::fatalBadEntry
         (
-            dict, "eArgument", "only with e as a Function1",
-            eArgumentMeaning, "e is the constant " + name(constants_.e)
+            dict, "eArgument", "only with e as a Function1", eArgumentMeaning,
+            "e is the constant " + name(policy_.e.constant)
         );
     }
-    eArgument_ = roughWallInput::readEnum
+    policy_.eArgument = roughWallInput::readEnum
     (
-        dict, "eArgument", argumentNames, eArgumentMeaning, eArgument_
+        dict, "eArgument", argumentNames, eArgumentMeaning,
+        roughWall::ImpactArgument::angle
     );
 
-    if (!dependsOnImpact() || checkPerCall_)
+    if (!dependsOnImpact() || policy_.checked)
     {
         return;
     }
@@ -147,17 +145,17 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
     {
         roughWall::checkTableBounds
         (
-            nodes[0], nodes[1], nodes[2], eArgument_,
+            nodes[0], nodes[1], nodes[2], policy_.eArgument,
             [&](const std::string& name, const double x)
             {
-                return value(name == "e" ? 0 : name == "mu0" ? 1 : 2, x);
+                return (*c[name == "e" ? 0 : name == "mu0" ? 1 : 2])(x);
             }
         );
     }
     catch (const roughWall::CoefficientOutOfRange& error)
     {
         FatalIOErrorInFunction(dict)
-            << "Patch " << patchName_ << " in " << dict.name() << ": "
+            << "Patch " << patchName << " in " << dict.name() << ": "
             << error.what() << " (keyword " << error.coefficient()
             << ")" << exit(FatalIOError);
     }
@@ -166,64 +164,25 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::facetImpactCoefficients::value
-(
-    const label i,
-    const scalar x
-) const
-{
-    const autoPtr<Function1<scalar>>& f = functions_[i];
-    return f.valid() ? f->value(x) : constants_.*members[i];
-}
-
-
 void Foam::facetImpactCoefficients::writeSummary(Ostream& os) const
 {
+    const coefficient c[3] = {policy_.e, policy_.mu0, policy_.muD};
     for (label i = 0; i < 3; ++i)
     {
         os  << (i ? ", " : "") << names[i] << " = ";
-        if (functions_[i].valid())
+        if (c[i].function)
         {
-            os  << functions_[i]->type() << " of the facet impact "
+            os  << c[i].function->type() << " of the facet impact "
                 << (
-                       i == 0
-                    && eArgument_ == roughWall::ImpactArgument::normalSpeed
+                       i == 0 && policy_.eArgument != ImpactArgument::angle
                      ? "normal speed [m/s]" : "angle [deg]"
                    );
         }
         else
         {
-            os  << constants_.*members[i];
+            os  << c[i].constant;
         }
     }
-}
-
-
-roughWall::FacetMaterial Foam::facetImpactCoefficients::at
-(
-    const roughWall::FacetImpact& impact
-) const
-{
-    const roughWall::FacetMaterial m
-    {
-        value(0, roughWall::argumentOf(impact, eArgument_)),
-        value(1, impact.angleDeg),
-        value(2, impact.angleDeg)
-    };
-    if (checkPerCall_)
-    {
-        try
-        {
-            roughWall::checkBounds(m, impact, eArgument_);
-        }
-        catch (const roughWall::CoefficientOutOfRange& error)
-        {
-            FatalErrorInFunction
-                << "Patch " << patchName_ << ": " << error.what()
-                << exit(FatalError);
-        }
-    }
-    return m;
 }
 
 

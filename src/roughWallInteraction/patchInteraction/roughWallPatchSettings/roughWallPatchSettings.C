@@ -85,54 +85,17 @@ string joined(const DynamicList<word>& names)
 const char* const patchesMeaning =
     "patch names or regular expressions and their interaction settings";
 
-//- The keywords of type rough (after type): e, mu0, muD, eArgument are
-//- facetImpactCoefficients', roughnessAngle and roughness
-//- roughnessAngleInput's
-const wordList roughKeywords
-{
-    "e", "mu0", "muD", "eArgument", "roughnessAngle", "roughness",
-    "lateralTilt", "maxFacetCollisions"
-};
+const char* const patchesAllowed =
+    "a list ( name { type ...; ... } \"regex\" { ... } ... ) with an entry "
+    "for every patch that is not coupled, empty or wedge; rough, rebound, "
+    "stick or escape on wall patches, none only on other patches "
+    "(OpenFOAM's own handling: escape through a patch, reflection on a "
+    "symmetry plane)";
 
 } // End anonymous namespace
 
 
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-void Foam::roughWallPatchSettings::warnOutside(const scalar d) const
-{
-    if (!warnedRange_)
-    {
-        warnedRange_ = true;
-        const roughWall::EnvelopeAngleTable& envelope =
-            roughness_.envelopeTable();
-        WarningInFunction
-            << "Patch entry " << patchName_ << ": a parcel of diameter " << d
-            << " m hit the wall, outside the diameters " << envelope.dMin()
-            << " to " << envelope.dMax() << " m for which Delta(d_p) of the "
-            << roughness_.source().c_str() << " is tabulated;" << nl
-            << "    Delta is held at its value at the nearer end (this "
-            << "warning is given once for each mesh patch the entry covers, "
-            << "on each processor)" << endl;
-    }
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
-
-Foam::roughWallPatchSettings::roughWallPatchSettings()
-:
-    patchName_(),
-    type_(interactionType::none),
-    e_(1),
-    mu_(0),
-    rough_(),
-    roughness_(),
-    coefficients_(),
-    impactDependent_(false),
-    warnedRange_(false)
-{}
-
 
 Foam::roughWallPatchSettings::roughWallPatchSettings
 (
@@ -140,14 +103,16 @@ Foam::roughWallPatchSettings::roughWallPatchSettings
     const dictionary& dict
 )
 :
-    roughWallPatchSettings()
-{
-    patchName_ = patchName;
-    type_ = roughWallInput::readEnum
+    patchName_(patchName),
+    type_
     (
-        dict, "type", typeNames, "what happens to a parcel that hits the patch"
-    );
-
+        roughWallInput::readEnum
+        (
+            dict, "type", typeNames,
+            "what happens to a parcel that hits the patch"
+        )
+    )
+{
     // The keywords of the type (the defaults and the law of rebound are
     // standardWallInteraction's), then a stop at any other keyword
     if (type_ == interactionType::rough)
@@ -204,30 +169,19 @@ Foam::roughWallPatchSettings::readPatches
 )
 {
     // The list of (patch name or regular expression, dictionary), read by
-    // OpenFOAM's List, wordRe and dictionary readers; each dictionary named
-    // after its entry, so that messages point at it
+    // OpenFOAM's List, wordRe and dictionary readers
     const List<patchEntry> entries
     (
         roughWallInput::read<List<patchEntry>>
         (
-            coeffs, "patches",
-            "a list ( name { type ...; ... } \"regex\" { ... } ... ) with at "
-            "least one entry",
-            patchesMeaning
+            coeffs, "patches", patchesAllowed, patchesMeaning
         )
     );
-    if (entries.empty())
-    {
-        roughWallInput::fatalBadEntry
-        (
-            coeffs, "patches", "a list with at least one entry",
-            patchesMeaning, "an empty list"
-        );
-    }
 
     // Each mesh patch gets the first entry that matches it; an entry that
     // matches no patch, or only patches of earlier entries, is never
-    // applied (a typo, or the same name twice): warned
+    // applied (a typo, or the same name twice): warned.  Each dictionary is
+    // named after its entry, so that messages point at it
     List<roughWallPatchSettings> result(patches.size());
     boolList covered(patches.size(), false);
     for (const patchEntry& entry : entries)
@@ -266,68 +220,53 @@ Foam::roughWallPatchSettings::readPatches
     }
 
     // Parcels never hit coupled patches (OpenFOAM transfers them), empty
-    // patches or wedges (tracked in the mid-plane) as walls
+    // patches or wedges (tracked in the mid-plane) as walls.  v1912's
+    // KinematicParcel::hitPatch counts hits on a patch that is not a wall
+    // as escapes before the patch interaction model is called: warned
     DynamicList<word> uncovered;
     DynamicList<word> noneOnWalls;
     DynamicList<word> keptOnNonWalls;
-
     Info<< "    Patch interactions:" << nl;
     forAll(patches, patchi)
     {
         const polyPatch& pp = patches[patchi];
         const roughWallPatchSettings& s = result[patchi];
         const bool wall = isA<wallPolyPatch>(pp);
-
         if (pp.coupled() || isA<emptyPolyPatch>(pp) || isA<wedgePolyPatch>(pp))
         {
             result[patchi] = roughWallPatchSettings();
-            continue;
         }
-        if (!covered[patchi])
+        else if (!covered[patchi])
         {
             uncovered.append(pp.name());
-            continue;
         }
-        if (s.type() == interactionType::none && wall)
+        else
         {
-            noneOnWalls.append(pp.name());
+            if (s.type() == interactionType::none && wall)
+            {
+                noneOnWalls.append(pp.name());
+            }
+            if (s.keepsParcels() && !wall && !roughWallCompat::isConstraint(pp))
+            {
+                keptOnNonWalls.append(pp.name());
+            }
+            Info<< "        " << pp.name() << ": ";
+            s.writeSummary(Info);
+            Info<< nl;
         }
-        if (s.keepsParcels() && !wall && !roughWallCompat::isConstraint(pp))
-        {
-            keptOnNonWalls.append(pp.name());
-        }
-        Info<< "        " << pp.name() << ": ";
-        s.writeSummary(Info);
-        Info<< nl;
     }
 
-    if (noneOnWalls.size())
+    if (entries.empty() || uncovered.size() || noneOnWalls.size())
     {
         roughWallInput::fatalBadEntry
         (
-            coeffs, "patches",
-            "rough, rebound, stick or escape on wall patches; none only on "
-            "other patches (OpenFOAM's own handling: escape through a patch, "
-            "reflection on a symmetry plane)",
-            patchesMeaning,
-            "type none for wall patch(es) " + joined(noneOnWalls)
+            coeffs, "patches", patchesAllowed, patchesMeaning,
+            entries.empty() ? "an empty list"
+          : uncovered.size() ? "no entry for patch(es) " + joined(uncovered)
+          : "type none for wall patch(es) " + joined(noneOnWalls)
           + " (OpenFOAM would leave their parcels stuck on the wall)"
         );
     }
-    if (uncovered.size())
-    {
-        roughWallInput::fatalBadEntry
-        (
-            coeffs, "patches",
-            "an entry (name or regular expression) for every patch that is "
-            "not coupled, empty or wedge",
-            patchesMeaning,
-            "no entry for patch(es) " + joined(uncovered)
-        );
-    }
-
-    // v1912's KinematicParcel::hitPatch counts hits on such patches as
-    // escapes before the patch interaction model is called
     if (roughWallCompat::esi && keptOnNonWalls.size())
     {
         WarningInFunction
@@ -346,8 +285,15 @@ Foam::wordList Foam::roughWallPatchSettings::keywords
     const interactionType type
 )
 {
+    // e, mu0, muD, eArgument: facetImpactCoefficients'; roughnessAngle and
+    // roughness: roughnessAngleInput's
     return
-        type == interactionType::rough ? roughKeywords
+        type == interactionType::rough
+      ? wordList
+        {
+            "e", "mu0", "muD", "eArgument", "roughnessAngle", "roughness",
+            "lateralTilt", "maxFacetCollisions"
+        }
       : type == interactionType::rebound ? wordList{"e", "mu"} : wordList();
 }
 
@@ -355,6 +301,25 @@ Foam::wordList Foam::roughWallPatchSettings::keywords
 Foam::word Foam::roughWallPatchSettings::typeName() const
 {
     return typeNames[type_];
+}
+
+
+void Foam::roughWallPatchSettings::warnOutside(const scalar d) const
+{
+    if (!warnedRange_)
+    {
+        warnedRange_ = true;
+        const roughWall::EnvelopeAngleTable& envelope =
+            roughness_.envelopeTable();
+        WarningInFunction
+            << "Patch entry " << patchName_ << ": a parcel of diameter " << d
+            << " m hit the wall, outside the diameters " << envelope.dMin()
+            << " to " << envelope.dMax() << " m for which Delta(d_p) of the "
+            << roughness_.source().c_str() << " is tabulated;" << nl
+            << "    Delta is held at its value at the nearer end (this "
+            << "warning is given once for each mesh patch the entry covers, "
+            << "on each processor)" << endl;
+    }
 }
 
 

@@ -131,8 +131,7 @@ roughWall::RoughnessAngle readAngle(const dictionary& dict)
     // A number, or a table (d Delta) read by OpenFOAM's List<Tuple2>
     scalar angle = 0;
     List<Tuple2<scalar, scalar>> table;
-    string why;
-    if (roughWallCompat::readWhole(e, [&]() { e.stream() >> angle; }, why))
+    if (roughWallCompat::readWhole(e, [&]() { e.stream() >> angle; }).empty())
     {
         table.setSize(1, Tuple2<scalar, scalar>(0, angle));
     }
@@ -172,25 +171,25 @@ roughWall::RoughnessAngle readProfile(const dictionary& dict)
     }
 
     // Named after the patch entry, so that the messages point at it (a
-    // sub-dictionary of an entry read from a stream loses that name)
+    // sub-dictionary of an entry read from a stream loses that name).  A
+    // measured trace is the wall itself: nothing else beside it
     dictionary rDict(e.dict());
     rDict.name() =
         fileName(dict.name() + roughWallCompat::scopeSeparator + "roughness");
-    const wordList names
-    {
-        "profile", "Ra", "Rq", "Rz", "RSm", "estimate"
-    };
-    roughWallInput::checkKeywords(rDict, names, "roughness");
+    const bool trace = roughWallCompat::findLiteral(rDict, "profile");
+    roughWallInput::checkKeywords
+    (
+        rDict,
+        trace ? wordList{"profile"}
+      : wordList{"profile", "Ra", "Rq", "Rz", "RSm", "estimate"},
+        trace
+      ? "roughness with a profile (the trace gives the wall: no parameter "
+        "Ra/Rq/Rz, RSm or estimate beside it)"
+      : "roughness"
+    );
 
-    // A measured trace: the wall itself, nothing else beside it
-    if (roughWallCompat::findLiteral(rDict, "profile"))
+    if (trace)
     {
-        roughWallInput::checkKeywords
-        (
-            rDict, {"profile"},
-            "roughness with a profile (the trace gives the wall: no "
-            "parameter Ra/Rq/Rz, RSm or estimate beside it)"
-        );
         const string allowed(roughWall::profileFileAllowed());
         const fileName given = roughWallInput::read<fileName>
         (
