@@ -134,18 +134,25 @@ void Foam::roughWallInput::checkKeywords
                 return editDistance(key, a) < editDistance(key, b);
             }
         );
-        OStringStream allowed;
-        allowed << "the keywords of " << where.c_str() << ":";
-        for (const word& w : used)
-        {
-            allowed << " " << w.c_str();
-        }
-        if (closest != used.end())
-        {
-            allowed << " (closest: " << closest->c_str() << ")";
-        }
-        fatalBadEntry(dict, key, allowed.str(), "not a keyword here");
+        fatalBadEntry
+        (
+            dict, key,
+            "the keywords of " + where + ": " + joined(used)
+          + (closest == used.end() ? "" : " (closest: " + *closest + ")"),
+            "not a keyword here"
+        );
     }
+}
+
+
+Foam::string Foam::roughWallInput::joined(const UList<word>& names)
+{
+    string s;
+    for (const word& name : names)
+    {
+        s += (s.empty() ? "" : " ") + name;
+    }
+    return s;
 }
 
 

@@ -53,6 +53,7 @@ namespace
 {
 
 using namespace Foam;
+using roughWallInput::joined;
 
 //- An entry of the patches list, read as OpenFOAM-14's LocalInteraction
 //- reads its own: a patch name or regular expression, then a dictionary
@@ -67,18 +68,6 @@ Istream& operator>>(Istream& is, patchEntry& e)
     dictionary d(is);
     e.second().transfer(d);
     return is;
-}
-
-
-//- The names as one space-separated string, for messages
-string joined(const DynamicList<word>& names)
-{
-    string s;
-    for (const word& name : names)
-    {
-        s += (s.empty() ? "" : " ") + name;
-    }
-    return s;
 }
 
 
