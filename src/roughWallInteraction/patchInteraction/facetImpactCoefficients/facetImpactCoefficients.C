@@ -20,7 +20,11 @@ namespace
 
 using roughWall::ImpactArgument;
 
+//- The coefficients' keywords and places in the core's ImpactFunctions
 const char* const names[3] = {"e", "mu0", "muD"};
+using F = Foam::facetImpactCoefficients::functions;
+Foam::facetImpactCoefficients::coefficient F::* const members[3] =
+    {&F::e, &F::mu0, &F::muD};
 
 const char* const meanings[3] =
 {
@@ -45,7 +49,8 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
     const word& patchName
 )
 :
-    policy_
+    patchName_(patchName),
+    coefficients_
     {
         {nullptr, 0}, {nullptr, 0}, {nullptr, 0},
         roughWall::ImpactArgument::angle, false
@@ -57,20 +62,21 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
     // friction above the static one could reverse the slip), muD's default
     // mu0.  Linear tables: the bounds checked at their nodes here; any other
     // function (a spline table too): at every call.  A constant: one node
-    coefficient* c[3] = {&policy_.e, &policy_.mu0, &policy_.muD};
     std::vector<double> nodes[3] = {{45}, {45}, {45}};
+    const coefficient& mu0 = coefficients_.mu0;
     for (label i = 0; i < 3; ++i)
     {
+        coefficient& c = coefficients_.*members[i];
         const entry* e = roughWallCompat::findLiteral(dict, names[i]);
         if (i == 2 && !e)
         {
-            policy_.muD = policy_.mu0;
+            c = mu0;
             nodes[2] = nodes[1];
             break;
         }
         const roughWallInput::range r
         {
-            0, i == 0 ? 1 : i == 2 && !c[1]->function ? c[1]->constant : GREAT,
+            0, i == 0 ? 1 : i == 2 && !mu0.function ? mu0.constant : GREAT,
             meanings[i]
         };
         const string allowed =
@@ -98,9 +104,9 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
         tmp<scalarField> x;
         if (f->type() == "constant")
         {
-            c[i]->constant = f->value(0);
+            c.constant = f->value(0);
             f.clear();
-            if (!(c[i]->constant >= r.min && c[i]->constant <= r.max))
+            if (!(c.constant >= r.min && c.constant <= r.max))
             {
                 roughWallInput::fatalBadEntry
                 (
@@ -117,27 +123,27 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
         }
         else
         {
-            policy_.checked = true;
+            coefficients_.checked = true;
         }
-        c[i]->function = f.valid() ? &f() : nullptr;
+        c.function = f.valid() ? &f() : nullptr;
     }
 
     const bool eArgument = roughWallCompat::findLiteral(dict, "eArgument");
-    if (eArgument && !policy_.e.function)
+    if (eArgument && !coefficients_.e.function)
     {
         roughWallInput::fatalBadEntry
         (
             dict, "eArgument", "only with e as a Function1", eArgumentMeaning,
-            "e is the constant " + name(policy_.e.constant)
+            "e is the constant " + name(coefficients_.e.constant)
         );
     }
-    policy_.eArgument = roughWallInput::readEnum
+    coefficients_.eArgument = roughWallInput::readEnum
     (
         dict, "eArgument", argumentNames, eArgumentMeaning,
         roughWall::ImpactArgument::angle
     );
 
-    if (!dependsOnImpact() || policy_.checked)
+    if (!dependsOnImpact() || coefficients_.checked)
     {
         return;
     }
@@ -145,10 +151,11 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
     {
         roughWall::checkTableBounds
         (
-            nodes[0], nodes[1], nodes[2], policy_.eArgument,
+            nodes[0], nodes[1], nodes[2], coefficients_.eArgument,
             [&](const std::string& name, const double x)
             {
-                return (*c[name == "e" ? 0 : name == "mu0" ? 1 : 2])(x);
+                const label i = name == "e" ? 0 : name == "mu0" ? 1 : 2;
+                return (coefficients_.*members[i])(x);
             }
         );
     }
@@ -164,23 +171,40 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+roughWall::FacetMaterial Foam::facetImpactCoefficients::at
+(
+    const roughWall::FacetImpact& impact
+) const
+{
+    try
+    {
+        return coefficients_(impact);
+    }
+    catch (const roughWall::CoefficientOutOfRange& error)
+    {
+        FatalErrorInFunction
+            << "Patch " << patchName_ << ": " << error.what()
+            << exit(FatalError);
+        return {};
+    }
+}
+
+
 void Foam::facetImpactCoefficients::writeSummary(Ostream& os) const
 {
-    const coefficient c[3] = {policy_.e, policy_.mu0, policy_.muD};
+    const bool eOfSpeed = coefficients_.eArgument != ImpactArgument::angle;
     for (label i = 0; i < 3; ++i)
     {
+        const coefficient& c = coefficients_.*members[i];
         os  << (i ? ", " : "") << names[i] << " = ";
-        if (c[i].function)
+        if (c.function)
         {
-            os  << c[i].function->type() << " of the facet impact "
-                << (
-                       i == 0 && policy_.eArgument != ImpactArgument::angle
-                     ? "normal speed [m/s]" : "angle [deg]"
-                   );
+            os  << c.function->type() << " of the facet impact "
+                << (i == 0 && eOfSpeed ? "normal speed [m/s]" : "angle [deg]");
         }
         else
         {
-            os  << c[i].constant;
+            os  << c.constant;
         }
     }
 }
