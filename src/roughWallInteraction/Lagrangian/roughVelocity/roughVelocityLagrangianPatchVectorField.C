@@ -290,13 +290,24 @@ void Foam::roughVelocityLagrangianPatchVectorField::evaluate
     // its first step, not at its first wall hit
     const tmp<scalarField> td(diameters());
 
-    if (subMesh.empty())
+    if (!subMesh.empty())
     {
-        return;
+        hit(td(), fraction);
     }
 
-    const scalarField& d = td();
+    // Every processor evaluates every patch: the warning of diameters
+    // outside an envelope's range is gathered here
+    rough_.reportOutsideRange(patch().name());
+}
 
+
+void Foam::roughVelocityLagrangianPatchVectorField::hit
+(
+    const scalarField& d,
+    const ROUGHWALL_LAGRANGIAN_FRACTION& fraction
+)
+{
+    const LagrangianSubMesh& subMesh = patch().mesh();
     const vectorField nf(subMesh.nf<vectorField>(fraction));
     const vectorField Uf(subMesh.Uf<vectorField>(fraction));
     const label emptyCmpt = roughWallCompat::emptyComponent

@@ -548,6 +548,10 @@ void Foam::RoughWallInteraction<CloudType>::info(ROUGHWALL_INFO_PARAMETERS)
 
     reportWallVelocity(ROUGHWALL_INFO_STREAM);
     reportInPlaneSpin();
+    forAll(patches_, patchi)
+    {
+        patches_[patchi].reportOutsideRange(stats_.patchName(patchi));
+    }
 
     if (this->writeTime())
     {

@@ -293,21 +293,34 @@ Foam::word Foam::roughWallPatchSettings::typeName() const
 }
 
 
-void Foam::roughWallPatchSettings::warnOutside(const scalar d) const
+void Foam::roughWallPatchSettings::reportOutsideRange(const word& patch)
 {
-    if (!warnedRange_)
+    if
+    (
+        type_ != interactionType::rough || warnedRange_
+     || roughness_.form() != roughWall::RoughnessAngle::Form::envelope
+    )
+    {
+        return;
+    }
+
+    // Gathered from every processor: a warning given on another processor
+    // than the master would not be printed
+    scalarList outside({-outsideMin_, outsideMax_});
+    roughWallCompat::maxOverProcessors(outside);
+    if (outside[1] > 0)
     {
         warnedRange_ = true;
         const roughWall::EnvelopeAngleTable& envelope =
             roughness_.envelopeTable();
         WarningInFunction
-            << "Patch entry " << patchName_ << ": a parcel of diameter " << d
+            << "Patch " << patch << " (entry " << patchName_ << "): parcels "
+            << "of diameters " << -outside[0] << " to " << outside[1]
             << " m hit the wall, outside the diameters " << envelope.dMin()
             << " to " << envelope.dMax() << " m for which Delta(d_p) of the "
             << roughness_.source().c_str() << " is tabulated;" << nl
-            << "    Delta is held at its value at the nearer end (this "
-            << "warning is given once for each mesh patch the entry covers, "
-            << "on each processor)" << endl;
+            << "    Delta is held at its value at the nearer end (warned "
+            << "once per mesh patch)" << endl;
     }
 }
 
