@@ -55,6 +55,9 @@ kinematicParticle cloud without forces (src/python/foamcase/lagrangianCase.py).
     V''_n = e |V'_n|, U'' = V'' + Uw: 10 and 30 deg slide and 60 deg rolls
     relative to the wall (30 deg would roll relative to the mesh's frame).
     Every particle's U'' to 1e-9 m/s.
+--test outsideRange: a profile's envelope tabulated for 1 to 50 um on
+    lowerWall, 80 um particles hitting it on processor 1 of 2 only: the
+    log warns once of the diameters outside the range.
 --test badInput: e 1.5, muD > mu0, an unknown keyword, a non-positive d,
     and neither roughnessAngle nor roughness: each stops with a message
     naming the file, the keyword and the allowed values; a cloud without a
@@ -89,7 +92,8 @@ def parse_args():
     t.add_platform_args(p, kinds=False)
     p.add_argument("--test", required=True,
                    choices=["flatWall", "smooth", "energy", "closedBox",
-                            "badInput", "outerCorrectors", "movingWall"])
+                            "badInput", "outerCorrectors", "movingWall",
+                            "outsideRange"])
     p.add_argument("--particles", type=int, default=10000)
     p.add_argument("--roughness", default="8")
     p.add_argument("--twoD", action="store_true")
@@ -510,6 +514,36 @@ def test_moving_wall(args, work):
 SKIPPED = []
 
 
+def test_outside_range(args, work):
+    """lowerWall's Delta from the envelope of a trace of 101 points 1 um
+    apart (tabulated for 1 to 50 um: docs/roughWallInteraction.md), 80 um
+    particles injected and hitting it at x > 0 only: on two processors
+    (x-slabs split at x = 0) every hit is on processor 1, whose warnings
+    OpenFOAM does not print.  The master warns once, naming the patch and
+    the diameters (80 to 80 um) and the range (1 to 50 um)."""
+    n = 10
+    pos = np.column_stack([0.01 + 0.004*np.arange(n), np.full(n, 0.005),
+                           np.zeros(n)])
+    case = lc.make_case(os.path.join(work, "outsideRange"),
+                        [lc.Group("steep", pos, (0.1, -1.0, 0.0), 80e-6)],
+                        ROUGH % "8",
+                        lowerWall="type roughVelocity; e 0.8; mu0 0.4; "
+                        "roughness { profile \"constant/shortTrace\"; }",
+                        end_time=0.02, n_procs=2)
+    fc.write_text(os.path.join(case, "constant", "shortTrace"), "".join(
+        "%g %g\n" % (1e-6*i, 1e-7*(i % 3)) for i in range(101)))
+    run(case, 2)
+    log = fc.read_text(os.path.join(case, "log.foamRun"))
+    warned = re.findall(r"Patch lowerWall \(entry lowerWall\): parcels of "
+                        r"diameters (\S+) to (\S+) m hit the wall, outside "
+                        r"the diameters (\S+) to (\S+) m", log)
+    expected = [80e-6, 80e-6, 1e-6, 50e-6]
+    t.check(len(warned) == 1 and all(
+        abs(float(a)/b - 1) < 1e-3 for a, b in zip(warned[0], expected)),
+        "hits on processor 1 only: warned once, 80 um outside 1 to 50 um "
+        "(%s)" % warned)
+
+
 def run_expect_error(case, label, patterns, skip=None):
     """foamRun stops with a message matching every pattern; skip (regex,
     reason): if the log matches regex the check is reported skipped (and
@@ -640,7 +674,8 @@ def main():
      "energy": test_energy, "closedBox": test_closed_box,
      "badInput": test_bad_input,
      "outerCorrectors": test_outer_correctors,
-     "movingWall": test_moving_wall}[args.test](args, work)
+     "movingWall": test_moving_wall,
+     "outsideRange": test_outside_range}[args.test](args, work)
 
 
 if __name__ == "__main__":
