@@ -156,6 +156,39 @@ Foam::string Foam::roughWallInput::joined(const UList<word>& names)
 }
 
 
+Foam::string Foam::roughWallInput::readWhole
+(
+    const entry& e,
+    const std::function<void()>& read
+)
+{
+    // OpenFOAM's FatalError and FatalIOError thrown for the call only (every
+    // release has throwExceptions(), off by default)
+    FatalError.throwExceptions();
+    FatalIOError.throwExceptions();
+    string why;
+    try
+    {
+        read();
+        const string left =
+            e.isDict() ? string() : roughWallCompat::unreadTokens(e);
+        if (!left.empty())
+        {
+            why = "tokens left over after reading: '" + left + "'";
+        }
+    }
+    catch (const error& err)
+    {
+        // Its first line: what is wrong (not the lists of valid names)
+        why = err.message();
+        why = why.empty() ? "stopped" : why.substr(0, why.find('\n'));
+    }
+    FatalError.dontThrowExceptions();
+    FatalIOError.dontThrowExceptions();
+    return why;
+}
+
+
 Foam::string Foam::roughWallInput::entryText
 (
     const dictionary& dict,

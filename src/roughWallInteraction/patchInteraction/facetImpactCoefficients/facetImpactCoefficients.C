@@ -85,7 +85,7 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
             "nothing after it";
 
         autoPtr<Function1<scalar>>& f = functions_[i];
-        const string why = e ? roughWallCompat::readWhole(*e, [&]()
+        const string why = e ? roughWallInput::readWhole(*e, [&]()
         {
             f = roughWallCompat::newScalarFunction1(names[i], dict);
         }) : "";

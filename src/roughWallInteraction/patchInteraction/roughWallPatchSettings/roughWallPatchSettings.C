@@ -144,7 +144,7 @@ Foam::roughWallPatchSettings::roughWallPatchSettings
     }
     wordList used{"type"};
     used.append(keywords(type_));
-    roughWallInput::checkKeywords(dict, used, "type " + typeName());
+    roughWallInput::checkKeywords(dict, used, "type " + typeNames[type_]);
 }
 
 
@@ -287,44 +287,6 @@ Foam::wordList Foam::roughWallPatchSettings::keywords
 }
 
 
-Foam::word Foam::roughWallPatchSettings::typeName() const
-{
-    return typeNames[type_];
-}
-
-
-void Foam::roughWallPatchSettings::reportOutsideRange(const word& patch)
-{
-    if
-    (
-        type_ != interactionType::rough || warnedRange_
-     || roughness_.form() != roughWall::RoughnessAngle::Form::envelope
-    )
-    {
-        return;
-    }
-
-    // Gathered from every processor: a warning given on another processor
-    // than the master would not be printed
-    scalarList outside({-outsideMin_, outsideMax_});
-    roughWallCompat::maxOverProcessors(outside);
-    if (outside[1] > 0)
-    {
-        warnedRange_ = true;
-        const roughWall::EnvelopeAngleTable& envelope =
-            roughness_.envelopeTable();
-        WarningInFunction
-            << "Patch " << patch << " (entry " << patchName_ << "): parcels "
-            << "of diameters " << -outside[0] << " to " << outside[1]
-            << " m hit the wall, outside the diameters " << envelope.dMin()
-            << " to " << envelope.dMax() << " m for which Delta(d_p) of the "
-            << roughness_.source().c_str() << " is tabulated;" << nl
-            << "    Delta is held at its value at the nearer end (warned "
-            << "once per mesh patch)" << endl;
-    }
-}
-
-
 void Foam::roughWallPatchSettings::warnLateralTiltIn2D(const word& patch) const
 {
     if (type_ == interactionType::rough && rough_.lateralTilt)
@@ -339,7 +301,7 @@ void Foam::roughWallPatchSettings::warnLateralTiltIn2D(const word& patch) const
 
 void Foam::roughWallPatchSettings::writeSummary(Ostream& os) const
 {
-    os  << typeName();
+    os  << typeNames[type_];
     if (type_ == interactionType::rough)
     {
         os  << ": ";

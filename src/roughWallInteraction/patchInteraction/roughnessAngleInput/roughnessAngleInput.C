@@ -131,7 +131,7 @@ roughWall::RoughnessAngle readAngle(const dictionary& dict)
     // A number, or a table (d Delta) read by OpenFOAM's List<Tuple2>
     scalar angle = 0;
     List<Tuple2<scalar, scalar>> table;
-    if (roughWallCompat::readWhole(e, [&]() { e.stream() >> angle; }).empty())
+    if (roughWallInput::readWhole(e, [&]() { e.stream() >> angle; }).empty())
     {
         table.setSize(1, Tuple2<scalar, scalar>(0, angle));
     }
@@ -191,22 +191,13 @@ roughWall::RoughnessAngle readProfile(const dictionary& dict)
     if (trace)
     {
         const string allowed(roughWall::profileFileAllowed());
-        const fileName given = roughWallInput::read<fileName>
+        // OpenFOAM's expansion of $VAR stops at an unset variable with a
+        // message that names neither the keyword nor the file: caught
+        fileName path = roughWallInput::read<fileName>
         (
-            rDict, "profile", allowed, traceMeaning
+            rDict, "profile", allowed, traceMeaning,
+            [](Istream& is) { fileName f; is >> f; f.expand(); return f; }
         );
-        // OpenFOAM's expansion stops at an unset variable with a message
-        // that names neither the keyword nor the file: caught
-        fileName path(given);
-        string error;
-        if (!roughWallCompat::callCatching([&]() { path.expand(); }, error))
-        {
-            roughWallInput::fatalBadEntry
-            (
-                rDict, "profile", allowed, traceMeaning,
-                "'" + given + "': " + error
-            );
-        }
         if (!path.isAbsolute())
         {
             path = fileName(getEnv("FOAM_CASE"))/path;
