@@ -144,7 +144,7 @@ Foam::roughWallPatchSettings::roughWallPatchSettings
     }
     wordList used{"type"};
     used.append(keywords(type_));
-    roughWallInput::checkKeywords(dict, used, "type " + typeNames[type_]);
+    roughWallInput::checkKeywords(dict, used, "type " + word(typeNames[type_]));
 }
 
 
