@@ -27,22 +27,23 @@ With --badInput: bad functions stop the run (non-zero exit, no crash):
     entry, "e = 1.2 at angle = 90 deg" and the range [0, 1];
   - eArgument with a constant e: FOAM FATAL IO ERROR naming eArgument;
   - beside a function e, the constants are checked as on a patch of
-    constants: mu0 '0.4 0.5' (two numbers; before 2026-11-27 the first was
-    taken) and muD 0.5 above mu0 0.4, each a FOAM FATAL IO ERROR naming the
+    constants: mu0 '0.4 0.5' (two numbers) and muD 0.5 above mu0 0.4, each a FOAM FATAL IO ERROR naming the
     keyword, the text found and its range;
-  - e a table followed by a token ('0.5': before 2026-11-27 OpenFOAM's
-    reader left it unread and the run went on with the table), e
-    'constant 0.5 0.6' (ran with 0.5; OpenFOAM-14's reader puts the 0.6
-    back after looking for units) and e a table
+  - e a table followed by a token ('0.5', which OpenFOAM's reader leaves
+    unread), e 'constant 0.5 0.6' (OpenFOAM-14's reader puts the 0.6 back
+    after looking for units) and e a table
     out of order (OpenFOAM's "out-of-order value", which names no keyword):
     FOAM FATAL IO ERROR naming the keyword, the patch entry, the token
     left over or OpenFOAM's message, and the allowed forms;
   - e the Function1 constant 1.5: kept as the number 1.5 and checked at
     start-up as every constant is: FOAM FATAL IO ERROR naming the keyword,
     the patch entry, 'constant 1.5' and [0, 1];
-  - muD a polynomial 0.1 + 0.01 beta with mu0 0.4 (above mu0 beyond 30 deg,
-    not checkable at start-up): FOAM FATAL ERROR at the first such facet
-    collision naming the patch, "muD = ", "at angle = " and "[0, mu0]".
+  - muD a polynomial beside the constant mu0 0.4: 0.1 + 0.01 beta (0.55 at
+    45 deg, the constant's node where the bounds are checked at start-up):
+    FOAM FATAL IO ERROR naming the keyword and "muD = 0.55 at angle = 45
+    deg"; 0.8 - 0.01 beta (0.35 at 45 deg, above mu0 below 40 deg): FOAM
+    FATAL ERROR at the first such facet collision naming the patch,
+    "muD = ", "at angle = " and "[0, mu0]".
 
 Usage: testImpactDependent.py --platform openfoam13|openfoam14|openfoam1912
            [--parcels N] [--badInput] [--work DIR]
@@ -109,8 +110,13 @@ def bad_input(platform, args):
     case = t.wall_impact_case(platform, os.path.join(args.work, "badCase"),
                               "kinematic", parcels=100, settings=SETTINGS)
     case.mesh(1)
-    polynomial = "polynomial (0.1 0.01)" if platform.foundation \
-        else "polynomial ((0.1 0) (0.01 1))"
+    # muD = 0.1 + 0.01 beta is 0.55 at 45 deg, above mu0 = 0.4: a constant's
+    # node (any one: 45 deg), where the bounds are checked at start-up.
+    # muD = 0.8 - 0.01 beta is 0.35 there, above mu0 below 40 deg and
+    # negative above 80 deg: found at the first such facet impact
+    def polynomial(c0, c1):
+        return ("polynomial (%g %g)" % (c0, c1) if platform.foundation
+                else "polynomial ((%g 0) (%g 1))" % (c0, c1))
     table = foam_table(E_TABLE)
     # A Catmull-Rom spline through these nodes overshoots 1 between 10 and
     # 20 deg (e = 1 + 1/8 at 15 deg: weights (-1, 9, 9, -1)/16 at the
@@ -157,8 +163,12 @@ def bad_input(platform, args):
             "e               %s;" % table, "e               constant 1.5;"),
          ["FOAM FATAL IO ERROR", "keyword 'e'", "lowerWall|upperWall",
           "'constant 1.5'", "[0, 1]"]),
-        ("muD polynomial above mu0", SETTINGS.replace(
-            foam_table(MUD_TABLE), polynomial),
+        ("muD polynomial above mu0 at 45 deg", SETTINGS.replace(
+            foam_table(MUD_TABLE), polynomial(0.1, 0.01)),
+         ["FOAM FATAL IO ERROR", "keyword 'muD'", "lowerWall|upperWall",
+          "muD = 0.55 at angle = 45 deg", "[0, mu0]"]),
+        ("muD polynomial above mu0 below 40 deg", SETTINGS.replace(
+            foam_table(MUD_TABLE), polynomial(0.8, -0.01)),
          ["FOAM FATAL ERROR", "lowerWall|upperWall", "muD = ",
           "at angle = ", "[0, mu0]"]),
     ]

@@ -297,8 +297,7 @@ def test():
 
     # Control: an entry whose patches all take an earlier entry (here a
     # name after a regular expression that covers it) runs with the
-    # earlier one and is warned of; before 2026-11-27 it was ignored
-    # without a message
+    # earlier one and is warned of
     case.write_settings(settings(outlet="lowerWall { type stick; }\n"
                                  "        lowerWal { type stick; }\n"
                                  "        outlet { type escape; }"))
@@ -307,7 +306,7 @@ def test():
     warning = ("The patches entry lowerWall is never applied: every patch "
                "it matches (lowerWall) takes an earlier entry")
     # An entry that matches no patch at all (a typo) is warned of too
-    typo = "No patch matches the patches entry lowerWal"
+    typo = "The patches entry lowerWal is never applied: no patch matches it"
     t.check(typo in out, "control: an entry matching no patch is warned of "
             "('%s')" % typo)
     t.check(rc == 0 and warning in out

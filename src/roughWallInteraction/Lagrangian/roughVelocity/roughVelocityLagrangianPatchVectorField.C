@@ -112,13 +112,7 @@ Foam::roughVelocityLagrangianPatchVectorField::coeffsDict
 
     // The keywords of this condition (type rough's and d), checked here so
     // that the message names this condition's, not the parcel model's
-    wordList used
-    (
-        roughWallPatchSettings::keywords
-        (
-            roughWallPatchSettings::interactionType::rough
-        )
-    );
+    wordList used(roughWallPatchSettings::roughKeywords);
     used.append("d");
     roughWallInput::checkKeywords(coeffs, used, string("type ") + typeName);
 
@@ -149,15 +143,7 @@ Foam::scalar Foam::roughVelocityLagrangianPatchVectorField::readDiameter
         return -1;
     }
 
-    return roughWallInput::readNumber<scalar>
-    (
-        coeffs, "d",
-        {
-            1e-9, 1,
-            "particle diameter [m] used for every particle instead of the "
-            "cloud's field d (default: the field d)"
-        }
-    );
+    return roughWallInput::readNumber<scalar>(coeffs, "d", {1e-9, 1});
 }
 
 

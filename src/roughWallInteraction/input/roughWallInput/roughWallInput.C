@@ -29,9 +29,9 @@ License
 
 #include "roughWallInput.H"
 #include "OStringStream.H"
-#include "foamCompat.H"
 
 #include <algorithm>
+#include <numeric>
 #include <vector>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -43,10 +43,7 @@ namespace
 std::size_t editDistance(const std::string& a, const std::string& b)
 {
     std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j)
-    {
-        row[j] = j;
-    }
+    std::iota(row.begin(), row.end(), 0);
     for (std::size_t i = 1; i <= a.size(); ++i)
     {
         std::size_t diagonal = row[0];
@@ -64,16 +61,6 @@ std::size_t editDistance(const std::string& a, const std::string& b)
     return row[b.size()];
 }
 
-
-//- A bound as text: OpenFOAM's form of the number, "inf" and "-inf" for
-//- no bound
-Foam::string boundText(const Foam::scalar x)
-{
-    return
-        x >= Foam::GREAT ? "inf" : x <= -Foam::GREAT ? "-inf"
-      : Foam::string(Foam::name(x));
-}
-
 } // End anonymous namespace
 
 
@@ -81,9 +68,14 @@ Foam::string boundText(const Foam::scalar x)
 
 Foam::string Foam::roughWallInput::range::allowed(const bool integer) const
 {
+    // OpenFOAM's form of a bound, "inf" and "-inf" for none
+    const auto text = [](const scalar x)
+    {
+        return x >= GREAT ? "inf" : x <= -GREAT ? "-inf" : string(name(x));
+    };
     return
         (integer ? "an integer in [" : "a number in [")
-      + boundText(min) + ", " + boundText(max) + "]";
+      + text(min) + ", " + text(max) + "]";
 }
 
 
@@ -92,7 +84,6 @@ void Foam::roughWallInput::fatalBadEntry
     const dictionary& dict,
     const word& keyword,
     const string& allowed,
-    const char* meaning,
     const string& found
 )
 {
@@ -102,7 +93,6 @@ void Foam::roughWallInput::fatalBadEntry
         << "    found:   "
         << (found.empty() ? entryText(dict, keyword) : found).c_str() << nl
         << "    allowed: " << allowed.c_str() << nl
-        << "    meaning: " << meaning << nl
         << exit(FatalIOError);
 
     // exit() does not return; keep [[noreturn]] honest for the compiler
@@ -120,27 +110,24 @@ void Foam::roughWallInput::checkKeywords
     for (const entry& e : dict)
     {
         const word& key = e.keyword();
-        if (std::find(used.begin(), used.end(), key) != used.end())
+        if (std::find(used.begin(), used.end(), key) == used.end())
         {
-            continue;
+            // With the closest used keyword
+            const auto closest = std::min_element
+            (
+                used.begin(), used.end(),
+                [&](const word& a, const word& b)
+                {
+                    return editDistance(key, a) < editDistance(key, b);
+                }
+            );
+            fatalBadEntry
+            (
+                dict, key,
+                "the keywords of " + where + ": " + joined(used)
+              + (closest == used.end() ? "" : " (closest: " + *closest + ")")
+            );
         }
-
-        // The closest used keyword, for the message
-        const auto closest = std::min_element
-        (
-            used.begin(), used.end(),
-            [&](const word& a, const word& b)
-            {
-                return editDistance(key, a) < editDistance(key, b);
-            }
-        );
-        fatalBadEntry
-        (
-            dict, key,
-            "the keywords of " + where + ": " + joined(used)
-          + (closest == used.end() ? "" : " (closest: " + *closest + ")"),
-            "not a keyword here"
-        );
     }
 }
 

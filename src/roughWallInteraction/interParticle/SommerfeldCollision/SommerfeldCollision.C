@@ -46,45 +46,26 @@ void Foam::SommerfeldCollision<CloudType>::readSettings(const dictionary& dict)
         typeName
     );
 
-    settings_.material.e = roughWallInput::readNumber<scalar>
-    (
-        dict, "e", {0, 1, "normal restitution of a particle collision"}
-    );
-    settings_.material.mu = roughWallInput::readNumber<scalar>
-    (
-        dict, "mu", {0, 10, "friction coefficient of a particle collision"}
-    );
-    correlation_ = roughWallInput::readSwitch
-    (
-        dict, "correlation",
-        "partner's fluctuation correlated with the parcel's (Sommerfeld's "
-        "R(St_K))"
-    );
+    settings_.material.e =
+        roughWallInput::readNumber<scalar>(dict, "e", {0, 1});
+    settings_.material.mu =
+        roughWallInput::readNumber<scalar>(dict, "mu", {0, 10});
+    correlation_ = roughWallInput::readSwitch(dict, "correlation");
     settings_.maxProbability = roughWallInput::readNumber<scalar>
     (
-        dict, "maxProbability",
-        {1e-6, 1, "largest collision probability of a step before it is "
-            "split"},
-        scalar(0.1)
+        dict, "maxProbability", {1e-6, 1}, scalar(0.1)
     );
     const label minCellParcels = roughWallInput::readNumber<label>
     (
-        dict, "minCellParcels",
-        {1, 1e6, "parcels of a size class a cell needs for its own "
-            "statistics"},
-        label(5)
+        dict, "minCellParcels", {1, 1e6}, label(5)
     );
 
-    scalarList bounds;
-    if (roughWallCompat::findLiteral(dict, "sizeClassBounds"))
-    {
-        bounds = roughWallInput::read<scalarList>
-        (
-            dict, "sizeClassBounds",
-            "a list of ascending positive diameters [m], e.g. (1e-4 2e-4)",
-            "inner bounds of the size classes"
-        );
-    }
+    const scalarList bounds = roughWallInput::read<scalarList>
+    (
+        dict, "sizeClassBounds",
+        "a list of ascending positive diameters [m], e.g. (1e-4 2e-4)",
+        scalarList()
+    );
     for (label i = 0; i < bounds.size(); ++i)
     {
         if (!(bounds[i] > 0) || (i > 0 && !(bounds[i] > bounds[i - 1])))
@@ -92,8 +73,7 @@ void Foam::SommerfeldCollision<CloudType>::readSettings(const dictionary& dict)
             roughWallInput::fatalBadEntry
             (
                 dict, "sizeClassBounds",
-                "a list of ascending positive diameters [m], e.g. (1e-4 2e-4)",
-                "inner bounds of the size classes"
+                "a list of ascending positive diameters [m], e.g. (1e-4 2e-4)"
             );
         }
     }

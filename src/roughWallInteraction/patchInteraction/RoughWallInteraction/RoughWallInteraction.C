@@ -373,8 +373,7 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
         roughWallInput::readNumber<label>
         (
             roughWallCompat::coeffs(*this), "incidenceAngleBins",
-            {1, 900, "bins of the incidence angle over [0, 90] deg for the "
-                "statistics per angle (default: none)"},
+            {1, 900},
             0
         )
     ),
@@ -426,16 +425,13 @@ Foam::RoughWallInteraction<CloudType>::RoughWallInteraction
 
     const bool writeToFile = roughWallInput::readSwitch
     (
-        roughWallCompat::coeffs(*this), "writeToFile",
-        "write the statistics under postProcessing/ (default: true)",
-        true
+        roughWallCompat::coeffs(*this), "writeToFile", true
     );
 
     const label precision = roughWallInput::readNumber<label>
     (
         roughWallCompat::coeffs(*this), "writePrecision",
-        {1, 17, "significant digits of the statistics file (default: "
-            "controlDict's writePrecision)"},
+        {1, 17},
         IOstream::defaultPrecision()
     );
 

@@ -6,7 +6,8 @@
 
 #include "facetImpactCoefficients.H"
 #include "roughWallInput.H"
-#include "foamCompat.H"
+
+#include <algorithm>
 
 // * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * //
 
@@ -26,17 +27,11 @@ using F = Foam::facetImpactCoefficients::functions;
 Foam::facetImpactCoefficients::coefficient F::* const members[3] =
     {&F::e, &F::mu0, &F::muD};
 
-const char* const meanings[3] =
+//- The index of the coefficient called name
+Foam::label indexOf(const std::string& name)
 {
-    "normal restitution coefficient of a facet collision",
-    "static friction coefficient (no-slip criterion)",
-    "dynamic (sliding) friction coefficient; must not exceed mu0 "
-    "(default: mu0)"
-};
-
-const char* const eArgumentMeaning =
-    "what e is a function of: angle (facet impact angle [deg]) "
-    "or normalSpeed (normal impact speed [m/s])";
+    return std::find(names, names + 3, name) - names;
+}
 
 } // End anonymous namespace
 
@@ -56,14 +51,28 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
         roughWall::ImpactArgument::angle, false
     }
 {
-    // Each coefficient a Function1 (OpenFOAM's reader, its stops caught,
-    // every token used); a constant kept as its number, in its range:
-    // e in [0, 1], mu0 >= 0, muD in [0, mu0] for a constant mu0 (sliding
-    // friction above the static one could reverse the slip), muD's default
-    // mu0.  Linear tables: the bounds checked at their nodes here; any other
-    // function (a spline table too): at every call.  A constant: one node
-    std::vector<double> nodes[3] = {{45}, {45}, {45}};
+    // e in [0, 1], mu0 >= 0, muD in [0, mu0] (sliding friction above the
+    // static one could reverse the slip)
     const coefficient& mu0 = coefficients_.mu0;
+    const auto allowed = [&](const label i)
+    {
+        return
+            roughWallInput::range
+            {
+                0, i == 0 ? 1 : i == 2 && !mu0.function ? mu0.constant : GREAT
+            }.allowed()
+          + (i == 2 ? " (at most mu0)" : "") + ", or an OpenFOAM Function1 of the facet impact, e.g. table "
+            "((0 0.95) (90 0.75)), with values in that range and nothing "
+            "after it";
+    };
+
+    // Each coefficient a Function1 (OpenFOAM's reader, its stops caught,
+    // every token used), muD's default mu0.  The bounds are checked at
+    // start-up (the core's checkTableBounds) at the nodes of a constant (any
+    // one) and of a table interpolated linearly, held or repeated beyond
+    // its ends: they hold everywhere if they hold there.  Any other function
+    // (a spline table too) has no such nodes: checked at every call
+    std::vector<double> nodes[3];
     for (label i = 0; i < 3; ++i)
     {
         coefficient& c = coefficients_.*members[i];
@@ -74,16 +83,6 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
             nodes[2] = nodes[1];
             break;
         }
-        const roughWallInput::range r
-        {
-            0, i == 0 ? 1 : i == 2 && !mu0.function ? mu0.constant : GREAT,
-            meanings[i]
-        };
-        const string allowed =
-            r.allowed() + ", or an OpenFOAM Function1 of the facet impact, "
-            "e.g. table ((0 0.95) (90 0.75)), with values in that range and "
-            "nothing after it";
-
         autoPtr<Function1<scalar>>& f = functions_[i];
         const string why = e ? roughWallInput::readWhole(*e, [&]()
         {
@@ -93,32 +92,32 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
         {
             roughWallInput::fatalBadEntry
             (
-                dict, names[i], allowed, r.meaning,
+                dict, names[i], allowed(i),
                 e ? roughWallInput::entryText(dict, names[i]) + " (" + why + ")"
                   : string()
             );
         }
 
-        // Its settings: its own sub-dictionary, or the entry's dictionary
-        // (ESI's inline table)
-        tmp<scalarField> x;
+        // A table's settings: its own sub-dictionary, or the entry's
+        // dictionary (ESI's inline table)
+        const dictionary& settings = e->isDict() ? e->dict() : dict;
+        const auto* table =
+            dynamic_cast<const roughWallCompat::scalarTable*>(&f());
         if (f->type() == "constant")
         {
             c.constant = f->value(0);
             f.clear();
-            if (!(c.constant >= r.min && c.constant <= r.max))
-            {
-                roughWallInput::fatalBadEntry
-                (
-                    dict, names[i], allowed, r.meaning
-                );
-            }
+            nodes[i] = {45};
         }
         else if
         (
-            roughWallCompat::tableNodes(f(), e->isDict() ? e->dict() : dict, x)
+            table
+         && settings.lookupOrDefault<word>("interpolationScheme", "linear")
+         == "linear"
+         && settings.lookupOrDefault<word>("outOfBounds", "clamp") != "zero"
         )
         {
+            const tmp<scalarField> x(table->x());
             nodes[i].assign(x().begin(), x().end());
         }
         else
@@ -133,20 +132,16 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
     {
         roughWallInput::fatalBadEntry
         (
-            dict, "eArgument", "only with e as a Function1", eArgumentMeaning,
+            dict, "eArgument", "only with e as a Function1",
             "e is the constant " + name(coefficients_.e.constant)
         );
     }
     coefficients_.eArgument = roughWallInput::readEnum
     (
-        dict, "eArgument", argumentNames, eArgumentMeaning,
-        roughWall::ImpactArgument::angle
+        dict, "eArgument", argumentNames, roughWall::ImpactArgument::angle
     );
 
-    if (!dependsOnImpact() || coefficients_.checked)
-    {
-        return;
-    }
+    // The value out of range, and for a function its argument
     try
     {
         roughWall::checkTableBounds
@@ -154,17 +149,22 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
             nodes[0], nodes[1], nodes[2], coefficients_.eArgument,
             [&](const std::string& name, const double x)
             {
-                const label i = name == "e" ? 0 : name == "mu0" ? 1 : 2;
-                return (coefficients_.*members[i])(x);
+                return (coefficients_.*members[indexOf(name)])(x);
             }
         );
     }
     catch (const roughWall::CoefficientOutOfRange& error)
     {
-        FatalIOErrorInFunction(dict)
-            << "Patch " << patchName << " in " << dict.name() << ": "
-            << error.what() << " (keyword " << error.coefficient()
-            << ")" << exit(FatalIOError);
+        const label i = indexOf(error.coefficient());
+        roughWallInput::fatalBadEntry
+        (
+            dict, names[i], allowed(i),
+            roughWallInput::entryText(dict, names[i])
+          + (
+                (coefficients_.*members[i]).function
+              ? " (" + string(error.what()) + ")" : ""
+            )
+        );
     }
 }
 

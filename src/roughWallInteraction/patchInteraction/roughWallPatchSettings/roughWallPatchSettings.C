@@ -30,8 +30,6 @@ License
 
 #include "roughWallPatchSettings.H"
 #include "roughWallInput.H"
-#include "roughnessAngleInput.H"
-#include "foamCompat.H"
 #include "limitsAndUnits.hpp"
 #include "Tuple2.H"
 #include "emptyPolyPatch.H"
@@ -45,6 +43,15 @@ ROUGHWALL_NAMED_ENUM
     typeNames, Foam::roughWallPatchSettings::interactionType, 5,
     "rough", "rebound", "stick", "escape", "none"
 );
+
+
+// e, mu0, muD, eArgument: facetImpactCoefficients'; roughnessAngle and
+// roughness: readRoughness's
+const Foam::wordList Foam::roughWallPatchSettings::roughKeywords
+{
+    "e", "mu0", "muD", "eArgument", "roughnessAngle", "roughness",
+    "lateralTilt", "maxFacetCollisions"
+};
 
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -71,9 +78,6 @@ Istream& operator>>(Istream& is, patchEntry& e)
 }
 
 
-const char* const patchesMeaning =
-    "patch names or regular expressions and their interaction settings";
-
 const char* const patchesAllowed =
     "a list ( name { type ...; ... } \"regex\" { ... } ... ) with an entry "
     "for every patch that is not coupled, empty or wedge; rough, rebound, "
@@ -93,14 +97,7 @@ Foam::roughWallPatchSettings::roughWallPatchSettings
 )
 :
     patchName_(patchName),
-    type_
-    (
-        roughWallInput::readEnum
-        (
-            dict, "type", typeNames,
-            "what happens to a parcel that hits the patch"
-        )
-    )
+    type_(roughWallInput::readEnum(dict, "type", typeNames))
 {
     // The keywords of the type (the defaults and the law of rebound are
     // standardWallInteraction's), then a stop at any other keyword
@@ -110,40 +107,28 @@ Foam::roughWallPatchSettings::roughWallPatchSettings
             std::make_shared<const facetImpactCoefficients>(dict, patchName);
         rough_.material = coefficients_->constants();
         impactDependent_ = coefficients_->dependsOnImpact();
-        roughness_ = roughnessAngleInput::read(dict);
-        rough_.lateralTilt = roughWallInput::readSwitch
-        (
-            dict, "lateralTilt",
-            "isotropic 3-D roughness: also tilt facets sideways by "
-            "N(0, Delta) (default: false; never applied in 2-D)",
-            false
-        );
+        roughness_ = readRoughness(dict);
+        rough_.lateralTilt =
+            roughWallInput::readSwitch(dict, "lateralTilt", false);
+        using namespace roughWall::limits;
         rough_.maxFacetCollisions = roughWallInput::readNumber<label>
         (
             dict, "maxFacetCollisions",
-            {
-                roughWall::limits::minMaxFacetCollisions,
-                roughWall::limits::maxMaxFacetCollisions,
-                "bound on facet collisions per wall hit before a smooth "
-                "mean-wall rebound is applied (default: 10)"
-            },
-            roughWall::limits::defaultMaxFacetCollisions
+            {minMaxFacetCollisions, maxMaxFacetCollisions},
+            defaultMaxFacetCollisions
         );
     }
     else if (type_ == interactionType::rebound)
     {
-        e_ = roughWallInput::readNumber<scalar>
-        (
-            dict, "e", {0, 1, "normal restitution coefficient (default: 1)"}, 1
-        );
-        mu_ = roughWallInput::readNumber<scalar>
-        (
-            dict, "mu",
-            {0, 1, "fraction of the tangential velocity lost (default: 0)"}, 0
-        );
+        e_ = roughWallInput::readNumber<scalar>(dict, "e", {0, 1}, 1);
+        mu_ = roughWallInput::readNumber<scalar>(dict, "mu", {0, 1}, 0);
     }
     wordList used{"type"};
-    used.append(keywords(type_));
+    used.append
+    (
+        type_ == interactionType::rough ? roughKeywords
+      : type_ == interactionType::rebound ? wordList{"e", "mu"} : wordList()
+    );
     roughWallInput::checkKeywords(dict, used, "type " + word(typeNames[type_]));
 }
 
@@ -159,12 +144,9 @@ Foam::roughWallPatchSettings::readPatches
 {
     // The list of (patch name or regular expression, dictionary), read by
     // OpenFOAM's List, wordRe and dictionary readers
-    const List<patchEntry> entries
+    const List<patchEntry> entries = roughWallInput::read<List<patchEntry>>
     (
-        roughWallInput::read<List<patchEntry>>
-        (
-            coeffs, "patches", patchesAllowed, patchesMeaning
-        )
+        coeffs, "patches", patchesAllowed
     );
 
     // Each mesh patch gets the first entry that matches it; an entry that
@@ -193,18 +175,16 @@ Foam::roughWallPatchSettings::readPatches
             result[patchi] = covered[patchi] ? result[patchi] : settings;
             covered[patchi] = true;
         }
-        if (ids.empty())
-        {
-            IOWarningInFunction(coeffs)
-                << "No patch matches the patches entry " << name << endl;
-        }
-        else if (taken.size() == ids.size())
+        if (taken.size() == ids.size())
         {
             IOWarningInFunction(coeffs)
                 << "The patches entry " << name << " is never applied: "
-                << "every patch it matches (" << joined(taken).c_str()
-                << ") takes an earlier entry (the first entry that matches "
-                << "a patch applies)" << endl;
+                << (
+                       ids.empty() ? string("no patch matches it")
+                     : "every patch it matches (" + joined(taken)
+                     + ") takes an earlier entry (the first entry that "
+                       "matches a patch applies)"
+                   ).c_str() << endl;
         }
     }
 
@@ -212,9 +192,7 @@ Foam::roughWallPatchSettings::readPatches
     // patches or wedges (tracked in the mid-plane) as walls.  v1912's
     // KinematicParcel::hitPatch counts hits on a patch that is not a wall
     // as escapes before the patch interaction model is called: warned
-    DynamicList<word> uncovered;
-    DynamicList<word> noneOnWalls;
-    DynamicList<word> keptOnNonWalls;
+    DynamicList<word> uncovered, noneOnWalls, keptOnNonWalls;
     Info<< "    Patch interactions:" << nl;
     forAll(patches, patchi)
     {
@@ -249,7 +227,7 @@ Foam::roughWallPatchSettings::readPatches
     {
         roughWallInput::fatalBadEntry
         (
-            coeffs, "patches", patchesAllowed, patchesMeaning,
+            coeffs, "patches", patchesAllowed,
             entries.empty() ? "an empty list"
           : uncovered.size() ? "no entry for patch(es) " + joined(uncovered)
           : "type none for wall patch(es) " + joined(noneOnWalls)
@@ -266,24 +244,6 @@ Foam::roughWallPatchSettings::readPatches
     }
 
     return result;
-}
-
-
-Foam::wordList Foam::roughWallPatchSettings::keywords
-(
-    const interactionType type
-)
-{
-    // e, mu0, muD, eArgument: facetImpactCoefficients'; roughnessAngle and
-    // roughness: roughnessAngleInput's
-    return
-        type == interactionType::rough
-      ? wordList
-        {
-            "e", "mu0", "muD", "eArgument", "roughnessAngle", "roughness",
-            "lateralTilt", "maxFacetCollisions"
-        }
-      : type == interactionType::rebound ? wordList{"e", "mu"} : wordList();
 }
 
 

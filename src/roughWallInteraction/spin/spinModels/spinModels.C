@@ -58,12 +58,7 @@ roughWall::spin::LiftCoefficient Foam::spinModels::readLiftCoefficient
 
     return roughWallInput::readEnum
     (
-        dict, "coefficient", liftNames,
-        "rotational lift coefficient C_LR: OesterleBuiDinh (Oesterle & "
-        "Bui Dinh 1998), RubinowKeller (Rubinow & Keller 1961, Re_p << 1) "
-        "or Loth (Loth 2008, Re_p < 2000, Omega* = 2 Gamma < 20)"
-        " (default: OesterleBuiDinh)",
-        LiftCoefficient::OesterleBuiDinh
+        dict, "coefficient", liftNames, LiftCoefficient::OesterleBuiDinh
     );
 }
 
@@ -78,11 +73,7 @@ Foam::spinModels::readTorqueCoefficient
 
     return roughWallInput::readEnum
     (
-        dict, "coefficient", torqueNames,
-        "rotational drag coefficient C_R: DennisSinghIngham (Dennis, Singh "
-        "& Ingham 1980) or Stokes (64 pi/Re_R at every Re_R) (default: "
-        "DennisSinghIngham)",
-        TorqueCoefficient::DennisSinghIngham
+        dict, "coefficient", torqueNames, TorqueCoefficient::DennisSinghIngham
     );
 }
 

@@ -27,9 +27,8 @@ License
 
 \*---------------------------------------------------------------------------*/
 
-#include "roughnessAngleInput.H"
+#include "roughWallPatchSettings.H"
 #include "roughWallInput.H"
-#include "foamCompat.H"
 #include "OSspecific.H"
 #include "Tuple2.H"
 
@@ -37,11 +36,15 @@ License
 
 // * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * //
 
-ROUGHWALL_NAMED_ENUM
-(
-    estimateNames, Foam::roughnessAngleInput::estimate, 2,
-    "envelope", "closedForm"
-);
+namespace
+{
+
+//- How Delta(d_p) follows from the profile parameters (keyword estimate)
+enum class estimate { envelope, closedForm };
+
+}
+
+ROUGHWALL_NAMED_ENUM(estimateNames, estimate, 2, "envelope", "closedForm");
 
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -51,45 +54,17 @@ namespace
 
 using namespace Foam;
 
-const char* const angleMeaning =
-    "roughness angle Delta, standard deviation of the facet tilt [deg]; "
-    "a constant or a table ((d1 Delta1) (d2 Delta2) ...) against the "
-    "particle diameter d [m]";
-
-const char* const profileMeaning =
-    "the wall's profile: a measured trace (profile \"<file>\") or its "
-    "roughness parameters (ISO 4287, SI units: one or more of Ra, Rq, Rz, "
-    "and RSm); Delta(d_p) from the rolling-sphere envelope of the trace or "
-    "of a synthetic Gaussian profile with these parameters (estimate "
-    "closedForm: atan(2 pi Rq / max(RSm, d_p)))";
-
-const char* const traceMeaning =
-    "measured wall profile: an ASCII file of lines 'x z' [m] (or units "
-    "given by a line '# units XU ZU'), x strictly increasing; path "
-    "absolute or relative to the case";
-
-//- The parameters: keyword, place and meaning
+//- The profile parameters (ISO 4287, SI units): keywords and places
 using P = roughWall::ProfileRoughness;
-const struct { const char* name; double P::* value; const char* meaning; }
-parameters[4] =
-{
-    {"Ra", &P::Ra, "arithmetic mean height of the profile [m]"},
-    {"Rq", &P::Rq, "root-mean-square height of the profile [m]"},
-    {"Rz", &P::Rz, "maximum height (peak to valley) of the profile [m]"},
-    {"RSm", &P::RSm, "mean width of the profile elements [m]"}
-};
+const char* const parameterNames[4] = {"Ra", "Rq", "Rz", "RSm"};
+double P::* const parameters[4] = {&P::Ra, &P::Rq, &P::Rz, &P::RSm};
 
 
 //- make(), the core's construction of Delta(d_p), with its errors as a
 //- FatalIOError of dict naming the keyword, what is allowed and what was
 //- found; the tabulation of an envelope logged with its CPU time
 template<class Make>
-roughWall::RoughnessAngle made
-(
-    const dictionary& dict,
-    const char* meaning,
-    const Make& make
-)
+roughWall::RoughnessAngle made(const dictionary& dict, const Make& make)
 {
     const std::clock_t start = std::clock();
     try
@@ -114,7 +89,7 @@ roughWall::RoughnessAngle made
         const string wrong(err.what());
         roughWallInput::fatalBadEntry
         (
-            dict, key, err.allowed, meaning,
+            dict, key, err.allowed,
             roughWallInput::entryText(dict, key)
           + (wrong.empty() ? "" : " (" + wrong + ")")
         );
@@ -126,32 +101,24 @@ roughWall::RoughnessAngle made
 roughWall::RoughnessAngle readAngle(const dictionary& dict)
 {
     const entry& e = *roughWallCompat::findLiteral(dict, "roughnessAngle");
-    const string allowed(roughWall::roughnessAngleAllowed());
 
-    // A number, or a table (d Delta) read by OpenFOAM's List<Tuple2>
-    scalar angle = 0;
-    List<Tuple2<scalar, scalar>> table;
-    if (roughWallInput::readWhole(e, [&]() { e.stream() >> angle; }).empty())
-    {
-        table.setSize(1, Tuple2<scalar, scalar>(0, angle));
-    }
-    else
+    // A number (one row, at any diameter), or a table (d Delta) read by
+    // OpenFOAM's List<Tuple2>
+    List<Tuple2<scalar, scalar>> table(1, Tuple2<scalar, scalar>(0, 0));
+    scalar& angle = table[0].second();
+    if (!roughWallInput::readWhole(e, [&]() { e.stream() >> angle; }).empty())
     {
         table = roughWallInput::read<List<Tuple2<scalar, scalar>>>
         (
-            dict, "roughnessAngle", allowed, angleMeaning
+            dict, "roughnessAngle", roughWall::roughnessAngleAllowed()
         );
     }
-
     std::vector<roughWall::RoughnessAngle::Row> rows;
     for (const Tuple2<scalar, scalar>& row : table)
     {
         rows.emplace_back(row.first(), row.second());
     }
-    return made
-    (
-        dict, angleMeaning, [&]() { return roughWall::roughnessOfRows(rows); }
-    );
+    return made(dict, [&]() { return roughWall::roughnessOfRows(rows); });
 }
 
 
@@ -165,8 +132,7 @@ roughWall::RoughnessAngle readProfile(const dictionary& dict)
         roughWallInput::fatalBadEntry
         (
             dict, "roughness",
-            "a dictionary { profile \"<file>\"; } or { Ra ...; RSm ...; }",
-            profileMeaning
+            "a dictionary { profile \"<file>\"; } or { Ra ...; RSm ...; }"
         );
     }
 
@@ -190,23 +156,18 @@ roughWall::RoughnessAngle readProfile(const dictionary& dict)
 
     if (trace)
     {
-        const string allowed(roughWall::profileFileAllowed());
         // OpenFOAM's expansion of $VAR stops at an unset variable with a
         // message that names neither the keyword nor the file: caught
         fileName path = roughWallInput::read<fileName>
         (
-            rDict, "profile", allowed, traceMeaning,
+            rDict, "profile", roughWall::profileFileAllowed(), std::nullopt,
             [](Istream& is) { fileName f; is >> f; f.expand(); return f; }
         );
         if (!path.isAbsolute())
         {
             path = fileName(getEnv("FOAM_CASE"))/path;
         }
-        return made
-        (
-            rDict, traceMeaning,
-            [&]() { return roughWall::roughnessOfTrace(path); }
-        );
+        return made(rDict, [&]() { return roughWall::roughnessOfTrace(path); });
     }
 
     // The parameters, of any sign (the core checks them) but NaN
@@ -214,41 +175,32 @@ roughWall::RoughnessAngle readProfile(const dictionary& dict)
     bool given[4];
     for (label i = 0; i < 4; ++i)
     {
-        given[i] = roughWallCompat::findLiteral(rDict, parameters[i].name);
-        p.*parameters[i].value = roughWallInput::readNumber<scalar>
+        given[i] = roughWallCompat::findLiteral(rDict, parameterNames[i]);
+        p.*parameters[i] = roughWallInput::readNumber<scalar>
         (
-            rDict, parameters[i].name,
-            {-GREAT, GREAT, parameters[i].meaning}, scalar(0)
+            rDict, parameterNames[i], {-GREAT, GREAT}, scalar(0)
         );
     }
     const bool closedForm = roughWallInput::readEnum
     (
-        rDict, "estimate", estimateNames,
-        "how Delta(d_p) follows from the parameters: the rolling-sphere "
-        "envelope of a synthetic Gaussian profile (envelope, default) "
-        "or atan(2 pi Rq / max(RSm, d_p)) (closedForm)",
-        roughnessAngleInput::estimate::envelope
-    ) == roughnessAngleInput::estimate::closedForm;
+        rDict, "estimate", estimateNames, estimate::envelope
+    ) == estimate::closedForm;
 
-    return made
-    (
-        rDict, profileMeaning,
-        [&]()
-        {
-            return roughWall::roughnessOfParameters
-            (
-                p, given[0], given[1], given[2], closedForm
-            );
-        }
-    );
+    return made(rDict, [&]()
+    {
+        return roughWall::roughnessOfParameters
+        (
+            p, given[0], given[1], given[2], closedForm
+        );
+    });
 }
 
 } // End anonymous namespace
 
 
-// * * * * * * * * * * * * * * * * Functions  * * * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-roughWall::RoughnessAngle Foam::roughnessAngleInput::read
+roughWall::RoughnessAngle Foam::roughWallPatchSettings::readRoughness
 (
     const dictionary& dict
 )
@@ -261,13 +213,9 @@ roughWall::RoughnessAngle Foam::roughnessAngleInput::read
         roughWallInput::fatalBadEntry
         (
             dict, "roughnessAngle",
-            "exactly one of the keywords roughnessAngle (a constant or a "
-            "table against the diameter) and roughness (a profile file or "
-            "the profile parameters)",
-            "the wall's roughness",
-            angle
-          ? "both roughnessAngle and roughness"
-          : "missing (neither roughnessAngle nor roughness)"
+            "exactly one of roughnessAngle (a constant or a table against "
+            "the diameter) and roughness (a profile file or parameters)",
+            angle ? "both" : "missing (neither roughnessAngle nor roughness)"
         );
     }
 
