@@ -39,6 +39,8 @@ License
 namespace
 {
 
+using namespace Foam;
+
 //- Levenshtein distance of two words (for the closest valid keyword)
 std::size_t editDistance(const std::string& a, const std::string& b)
 {
@@ -59,6 +61,25 @@ std::size_t editDistance(const std::string& a, const std::string& b)
         }
     }
     return row[b.size()];
+}
+
+
+//- The entry keyword of dict as text: its tokens in quotes, "a
+//- dictionary" or "missing"
+string entryText(const dictionary& dict, const word& keyword)
+{
+    const entry* e = roughWallCompat::findLiteral(dict, keyword);
+    if (!e || e->isDict())
+    {
+        return e ? "a dictionary" : "missing";
+    }
+    OStringStream os;
+    const ITstream& is = e->stream();
+    forAll(is, toki)
+    {
+        os  << (toki ? " " : "") << is[toki];
+    }
+    return "'" + os.str() + "'";
 }
 
 } // End anonymous namespace
@@ -84,14 +105,14 @@ void Foam::roughWallInput::fatalBadEntry
     const dictionary& dict,
     const word& keyword,
     const string& allowed,
-    const string& found
+    const string& why
 )
 {
     FatalIOErrorInFunction(dict)
         << "Bad entry for keyword '" << keyword.c_str() << "' in dictionary "
         << dict.name().c_str() << nl
-        << "    found:   "
-        << (found.empty() ? entryText(dict, keyword) : found).c_str() << nl
+        << "    found:   " << entryText(dict, keyword).c_str()
+        << (why.empty() ? string() : " (" + why + ")").c_str() << nl
         << "    allowed: " << allowed.c_str() << nl
         << exit(FatalIOError);
 
@@ -174,28 +195,6 @@ Foam::string Foam::roughWallInput::readWhole
     FatalIOError.dontThrowExceptions();
     return why;
 }
-
-
-Foam::string Foam::roughWallInput::entryText
-(
-    const dictionary& dict,
-    const word& keyword
-)
-{
-    const entry* eptr = roughWallCompat::findLiteral(dict, keyword);
-    if (!eptr || eptr->isDict())
-    {
-        return eptr ? "a dictionary" : "missing";
-    }
-    OStringStream os;
-    const ITstream& is = eptr->stream();
-    forAll(is, toki)
-    {
-        os  << (toki ? " " : "") << is[toki];
-    }
-    return "'" + os.str() + "'";
-}
-
 
 
 // ************************************************************************* //

@@ -61,7 +61,8 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
             {
                 0, i == 0 ? 1 : i == 2 && !mu0.function ? mu0.constant : GREAT
             }.allowed()
-          + (i == 2 ? " (at most mu0)" : "") + ", or an OpenFOAM Function1 of the facet impact, e.g. table "
+          + (i == 2 ? " (at most mu0)" : "")
+          + ", or an OpenFOAM Function1 of the facet impact, e.g. table "
             "((0 0.95) (90 0.75)), with values in that range and nothing "
             "after it";
     };
@@ -90,19 +91,13 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
         }) : "";
         if (!e || !why.empty())
         {
-            roughWallInput::fatalBadEntry
-            (
-                dict, names[i], allowed(i),
-                e ? roughWallInput::entryText(dict, names[i]) + " (" + why + ")"
-                  : string()
-            );
+            roughWallInput::fatalBadEntry(dict, names[i], allowed(i), why);
         }
 
         // A table's settings: its own sub-dictionary, or the entry's
         // dictionary (ESI's inline table)
         const dictionary& settings = e->isDict() ? e->dict() : dict;
-        const auto* table =
-            dynamic_cast<const roughWallCompat::scalarTable*>(&f());
+        const auto* t = dynamic_cast<const roughWallCompat::scalarTable*>(&f());
         if (f->type() == "constant")
         {
             c.constant = f->value(0);
@@ -111,13 +106,13 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
         }
         else if
         (
-            table
+            t
          && settings.lookupOrDefault<word>("interpolationScheme", "linear")
          == "linear"
          && settings.lookupOrDefault<word>("outOfBounds", "clamp") != "zero"
         )
         {
-            const tmp<scalarField> x(table->x());
+            const tmp<scalarField> x(t->x());
             nodes[i].assign(x().begin(), x().end());
         }
         else
@@ -127,19 +122,19 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
         c.function = f.valid() ? &f() : nullptr;
     }
 
-    const bool eArgument = roughWallCompat::findLiteral(dict, "eArgument");
-    if (eArgument && !coefficients_.e.function)
-    {
-        roughWallInput::fatalBadEntry
-        (
-            dict, "eArgument", "only with e as a Function1",
-            "e is the constant " + name(coefficients_.e.constant)
-        );
-    }
     coefficients_.eArgument = roughWallInput::readEnum
     (
         dict, "eArgument", argumentNames, roughWall::ImpactArgument::angle
     );
+    const coefficient& e = coefficients_.e;
+    if (!e.function && roughWallCompat::findLiteral(dict, "eArgument"))
+    {
+        roughWallInput::fatalBadEntry
+        (
+            dict, "eArgument", "only with e as a Function1",
+            "e is the constant " + name(e.constant)
+        );
+    }
 
     // The value out of range, and for a function its argument
     try
@@ -159,11 +154,7 @@ Foam::facetImpactCoefficients::facetImpactCoefficients
         roughWallInput::fatalBadEntry
         (
             dict, names[i], allowed(i),
-            roughWallInput::entryText(dict, names[i])
-          + (
-                (coefficients_.*members[i]).function
-              ? " (" + string(error.what()) + ")" : ""
-            )
+            (coefficients_.*members[i]).function ? error.what() : ""
         );
     }
 }
@@ -190,12 +181,14 @@ roughWall::FacetMaterial Foam::facetImpactCoefficients::at
 }
 
 
-void Foam::facetImpactCoefficients::writeSummary(Ostream& os) const
+// * * * * * * * * * * * * * * * IOstream Operators  * * * * * * * * * * * //
+
+Foam::Ostream& Foam::operator<<(Ostream& os, const facetImpactCoefficients& f)
 {
-    const bool eOfSpeed = coefficients_.eArgument != ImpactArgument::angle;
+    const bool eOfSpeed = f.coefficients_.eArgument != ImpactArgument::angle;
     for (label i = 0; i < 3; ++i)
     {
-        const coefficient& c = coefficients_.*members[i];
+        const auto& c = f.coefficients_.*members[i];
         os  << (i ? ", " : "") << names[i] << " = ";
         if (c.function)
         {
@@ -207,6 +200,7 @@ void Foam::facetImpactCoefficients::writeSummary(Ostream& os) const
             os  << c.constant;
         }
     }
+    return os;
 }
 
 

@@ -30,7 +30,6 @@ License
 
 #include "roughWallPatchSettings.H"
 #include "roughWallInput.H"
-#include "limitsAndUnits.hpp"
 #include "Tuple2.H"
 #include "emptyPolyPatch.H"
 #include "wedgePolyPatch.H"
@@ -49,7 +48,7 @@ ROUGHWALL_NAMED_ENUM
 // roughness: readRoughness's
 const Foam::wordList Foam::roughWallPatchSettings::roughKeywords
 {
-    "e", "mu0", "muD", "eArgument", "roughnessAngle", "roughness",
+    "type", "e", "mu0", "muD", "eArgument", "roughnessAngle", "roughness",
     "lateralTilt", "maxFacetCollisions"
 };
 
@@ -72,18 +71,15 @@ struct patchEntry
 Istream& operator>>(Istream& is, patchEntry& e)
 {
     e.first() = wordRe(is);
-    dictionary d(is);
-    e.second().transfer(d);
+    e.second() = dictionary(is);
     return is;
 }
 
 
 const char* const patchesAllowed =
     "a list ( name { type ...; ... } \"regex\" { ... } ... ) with an entry "
-    "for every patch that is not coupled, empty or wedge; rough, rebound, "
-    "stick or escape on wall patches, none only on other patches "
-    "(OpenFOAM's own handling: escape through a patch, reflection on a "
-    "symmetry plane)";
+    "for every patch that is not coupled, empty or wedge; none (OpenFOAM's "
+    "own handling of the patch type) only on patches that are not walls";
 
 } // End anonymous namespace
 
@@ -123,13 +119,14 @@ Foam::roughWallPatchSettings::roughWallPatchSettings
         e_ = roughWallInput::readNumber<scalar>(dict, "e", {0, 1}, 1);
         mu_ = roughWallInput::readNumber<scalar>(dict, "mu", {0, 1}, 0);
     }
-    wordList used{"type"};
-    used.append
+    roughWallInput::checkKeywords
     (
+        dict,
         type_ == interactionType::rough ? roughKeywords
-      : type_ == interactionType::rebound ? wordList{"e", "mu"} : wordList()
+      : type_ == interactionType::rebound ? wordList{"type", "e", "mu"}
+      : wordList{"type"},
+        "type " + word(typeNames[type_])
     );
-    roughWallInput::checkKeywords(dict, used, "type " + word(typeNames[type_]));
 }
 
 
@@ -217,9 +214,7 @@ Foam::roughWallPatchSettings::readPatches
             {
                 keptOnNonWalls.append(pp.name());
             }
-            Info<< "        " << pp.name() << ": ";
-            s.writeSummary(Info);
-            Info<< nl;
+            Info<< "        " << pp.name() << ": " << s << nl;
         }
     }
 
@@ -231,7 +226,7 @@ Foam::roughWallPatchSettings::readPatches
             entries.empty() ? "an empty list"
           : uncovered.size() ? "no entry for patch(es) " + joined(uncovered)
           : "type none for wall patch(es) " + joined(noneOnWalls)
-          + " (OpenFOAM would leave their parcels stuck on the wall)"
+          + ": OpenFOAM would leave their parcels stuck on the wall"
         );
     }
     if (roughWallCompat::esi && keptOnNonWalls.size())
@@ -259,21 +254,23 @@ void Foam::roughWallPatchSettings::warnLateralTiltIn2D(const word& patch) const
 }
 
 
-void Foam::roughWallPatchSettings::writeSummary(Ostream& os) const
+// * * * * * * * * * * * * * * * IOstream Operators  * * * * * * * * * * * //
+
+Foam::Ostream& Foam::operator<<(Ostream& os, const roughWallPatchSettings& s)
 {
-    os  << typeNames[type_];
-    if (type_ == interactionType::rough)
+    os  << typeNames[s.type_];
+    if (s.type_ == roughWallPatchSettings::interactionType::rough)
     {
-        os  << ": ";
-        coefficients_->writeSummary(os);
-        os  << ", roughnessAngle = " << roughness_.describe().c_str()
-            << ", lateralTilt = " << (rough_.lateralTilt ? "true" : "false")
-            << ", maxFacetCollisions = " << rough_.maxFacetCollisions;
+        os  << ": " << *s.coefficients_
+            << ", roughnessAngle = " << s.roughness_.describe().c_str()
+            << ", lateralTilt = " << (s.rough_.lateralTilt ? "true" : "false")
+            << ", maxFacetCollisions = " << s.rough_.maxFacetCollisions;
     }
-    else if (type_ == interactionType::rebound)
+    else if (s.type_ == roughWallPatchSettings::interactionType::rebound)
     {
-        os  << ": e = " << e_ << ", mu = " << mu_;
+        os  << ": e = " << s.e_ << ", mu = " << s.mu_;
     }
+    return os;
 }
 
 

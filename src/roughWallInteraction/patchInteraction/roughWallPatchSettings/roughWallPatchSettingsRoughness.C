@@ -85,13 +85,9 @@ roughWall::RoughnessAngle made(const dictionary& dict, const Make& make)
     }
     catch (const roughWall::BadRoughness& err)
     {
-        const word key(err.keyword);
-        const string wrong(err.what());
         roughWallInput::fatalBadEntry
         (
-            dict, key, err.allowed,
-            roughWallInput::entryText(dict, key)
-          + (wrong.empty() ? "" : " (" + wrong + ")")
+            dict, err.keyword, err.allowed, err.what()
         );
     }
 }
@@ -148,10 +144,7 @@ roughWall::RoughnessAngle readProfile(const dictionary& dict)
         rDict,
         trace ? wordList{"profile"}
       : wordList{"profile", "Ra", "Rq", "Rz", "RSm", "estimate"},
-        trace
-      ? "roughness with a profile (the trace gives the wall: no parameter "
-        "Ra/Rq/Rz, RSm or estimate beside it)"
-      : "roughness"
+        trace ? "roughness with a profile (nothing beside it)" : "roughness"
     );
 
     if (trace)
@@ -205,21 +198,20 @@ roughWall::RoughnessAngle Foam::roughWallPatchSettings::readRoughness
     const dictionary& dict
 )
 {
-    const bool angle = roughWallCompat::findLiteral(dict, "roughnessAngle");
+    const entry* e = roughWallCompat::findLiteral(dict, "roughnessAngle");
     const bool profile = roughWallCompat::findLiteral(dict, "roughness");
 
-    if (angle == profile)
+    if (bool(e) == profile)
     {
         roughWallInput::fatalBadEntry
         (
             dict, "roughnessAngle",
             "exactly one of roughnessAngle (a constant or a table against "
             "the diameter) and roughness (a profile file or parameters)",
-            angle ? "both" : "missing (neither roughnessAngle nor roughness)"
+            e ? "both" : "neither roughnessAngle nor roughness"
         );
     }
-
-    return angle ? readAngle(dict) : readProfile(dict);
+    return e ? readAngle(dict) : readProfile(dict);
 }
 
 
